@@ -1,0 +1,36 @@
+#include "diag/catalogue.hpp"
+
+#include <array>
+
+namespace edsc {
+
+namespace {
+constexpr std::array rules{
+#define EDSC_DIAG(sym, name, level, group, summary) \
+  rule_info{diag_id::sym, name, severity::level, group, summary},
+#include "diag/catalogue.def"
+#undef EDSC_DIAG
+};
+}  // namespace
+
+std::string_view to_string(severity s) {
+  switch (s) {
+    case severity::note: return "note";
+    case severity::warning: return "warning";
+    case severity::error: return "error";
+  }
+  return "error";
+}
+
+const rule_info& rule_of(diag_id id) { return rules[static_cast<std::size_t>(id)]; }
+
+std::span<const rule_info> all_rules() { return rules; }
+
+std::optional<diag_id> find_rule(std::string_view name) {
+  for (const auto& r : rules) {
+    if (r.name == name) return r.id;
+  }
+  return std::nullopt;
+}
+
+}  // namespace edsc

@@ -1,0 +1,18 @@
+#pragma once
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace edsc::driver {
+
+// Exit status shared by every command: what CI scripts rely on.
+enum exit_code : int { exit_ok = 0, exit_findings = 1, exit_failure = 2 };
+
+// Each command registers its subcommand and stores the action to run once
+// the command line has been parsed successfully.
+using command_action = std::function<int()>;
+
+void register_check(CLI::App& app, command_action& run);
+void register_edit(CLI::App& app, command_action& run);
+
+}  // namespace edsc::driver

@@ -1,0 +1,46 @@
+#include "source/source_file.hpp"
+
+#include <algorithm>
+
+namespace edsc {
+
+source_file::source_file(std::string path, std::string text)
+    : path_(std::move(path)), text_(std::move(text)) {}
+
+void source_file::index_lines() const {
+  std::call_once(indexed_, [this] {
+    line_starts_.push_back(0);
+    const auto n = text_.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const char c = text_[i];
+      // CR, LF and CRLF each end one line, as the grammar treats them.
+      if (c == '\n' || (c == '\r' && (i + 1 == n || text_[i + 1] != '\n'))) {
+        line_starts_.push_back(static_cast<std::uint32_t>(i + 1));
+      }
+    }
+  });
+}
+
+std::uint32_t source_file::line_count() const {
+  index_lines();
+  return static_cast<std::uint32_t>(line_starts_.size());
+}
+
+line_col source_file::position(std::uint32_t offset) const {
+  index_lines();
+  offset = std::min<std::uint32_t>(offset, size());
+  const auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
+  const auto line = static_cast<std::uint32_t>(it - line_starts_.begin());
+  return {line, offset - line_starts_[line - 1] + 1};
+}
+
+std::string_view source_file::line_text(std::uint32_t line) const {
+  index_lines();
+  if (line == 0 || line > line_starts_.size()) return {};
+  const std::uint32_t begin = line_starts_[line - 1];
+  std::uint32_t end = line < line_starts_.size() ? line_starts_[line] : size();
+  while (end > begin && (text_[end - 1] == '\n' || text_[end - 1] == '\r')) --end;
+  return std::string_view(text_).substr(begin, end - begin);
+}
+
+}  // namespace edsc

@@ -1,0 +1,125 @@
+#pragma once
+// The EDS grammar: lexical and structural layer, as PEGTL rules only.
+// Actions live in compiler/parse/; this header has no side effects.
+//
+// Where edsc accepts more or less than ../shared/docs/EDS_FORMAT.md §1, and why:
+// - More: comments between adjacent string pieces and between a value and its
+//   comma (the format leaves it open; vendors write them).
+// - More: any number of spaces inside a section name, and blanks around it
+//   (`[ Device ]`); names are judged by the validator, not the parser.
+// - More: any escape after a backslash parses; undefined escapes and `\u`
+//   outside L"..." are reported as errors afterwards, so the string still
+//   round-trips byte for byte.
+// - More: error productions. A missing `;`, `=`, `,` or `}` and stray text are
+//   recognised, reported and stepped over (resynchronising at the next `;`,
+//   `[` or line that starts `Keyword =`), so one run reports every error.
+// - More: a bare value may hold blanks between words on one line (`20 66 24 01`,
+//   an unquoted EPATH seen in a real file); so `1 2` is one (invalid) value,
+//   not two values missing a comma.
+// - Less: bare values cannot contain `=`, `[` or `]` (never seen in real files;
+//   excluding them lets `Keyword =` on the next line end an entry whose `;` is
+//   missing, the usual mistake in hand-written files).
+// - Less: datasets `{...}` nest at most `max_nesting` deep (STRINGI needs 2).
+// - Less: a string cannot span lines (the format forbids it; use adjacent pieces).
+
+#include <type_traits>
+
+#include <tao/pegtl.hpp>
+
+namespace edsc::grammar {
+
+namespace pg = tao::pegtl;
+
+inline constexpr unsigned max_nesting = 16;
+
+// ---- trivia -------------------------------------------------------------------
+struct blank : pg::plus<pg::one<' ', '\t'>> {};
+struct newline : pg::sor<pg::seq<pg::one<'\r'>, pg::opt<pg::one<'\n'>>>, pg::one<'\n'>> {};
+struct comment : pg::seq<pg::one<'$'>, pg::star<pg::not_one<'\r', '\n'>>> {};
+struct trivia : pg::sor<blank, newline, comment> {};
+struct skip : pg::star<trivia> {};
+
+// ---- section headers ------------------------------------------------------------
+struct name_char : pg::sor<pg::ranges<'a', 'z', 'A', 'Z', '0', '9'>, pg::one<'_', '.', '/', '\\', '-'>> {};
+struct name_text : pg::seq<pg::plus<name_char>, pg::star<pg::plus<pg::one<' '>>, pg::plus<name_char>>> {};
+struct lbracket : pg::one<'['> {};
+struct rbracket : pg::one<']'> {};
+struct section_name : name_text {};
+struct good_header : pg::seq<lbracket, pg::opt<blank>, section_name, pg::opt<blank>, rbracket> {};
+struct bad_header_body : pg::star<pg::not_one<']', '\r', '\n'>> {};
+struct bad_header : pg::seq<lbracket, bad_header_body, pg::opt<rbracket>> {};
+struct section_header : pg::sor<pg::seq<pg::at<good_header>, good_header>, bad_header> {};
+
+// ---- strings --------------------------------------------------------------------
+struct escape : pg::seq<pg::one<'\\'>, pg::not_one<'\r', '\n'>> {};
+struct string_char : pg::sor<escape, pg::not_one<'"', '\\', '\r', '\n'>> {};
+struct string_open : pg::seq<pg::opt<pg::one<'L'>>, pg::one<'"'>> {};
+struct string_piece : pg::seq<string_open, pg::star<string_char>, pg::one<'"'>> {};
+struct unterminated_string : pg::seq<string_open, pg::star<string_char>, pg::opt<pg::one<'\\'>>> {};
+struct string_token : pg::sor<string_piece, unterminated_string> {};
+struct string_seq : pg::seq<string_token, pg::star<pg::at<skip, string_open>, skip, string_token>> {};
+
+// ---- entries --------------------------------------------------------------------
+struct keyword_text : pg::plus<pg::identifier_other> {};
+struct keyword : keyword_text {};
+struct equals : pg::one<'='> {};
+struct comma : pg::one<','> {};
+struct semicolon : pg::one<';'> {};
+struct new_entry_ahead : pg::seq<keyword_text, skip, pg::one<'='>> {};
+
+struct bare_char : pg::not_one<',', ';', '"', '{', '}', '$', ' ', '\t', '\r', '\n', '=', '[', ']'> {};
+// Words separated by single-line blanks stay one value: some tools write
+// unquoted EPATHs (`20 66 24 01`); the validator judges the text.
+struct bare : pg::seq<pg::plus<bare_char>,
+                      pg::star<pg::plus<pg::one<' ', '\t'>>, pg::not_at<new_entry_ahead>, pg::plus<bare_char>>> {};
+struct lbrace : pg::one<'{'> {};
+struct rbrace : pg::one<'}'> {};
+struct deep_lbrace : pg::one<'{'> {};
+
+// Error productions: zero-width markers where a token is missing.
+struct missing_equals : pg::success {};
+struct missing_comma : pg::success {};
+struct missing_semicolon : pg::success {};
+struct missing_rbrace : pg::success {};
+
+// Recovery: step over text (strings and comments whole, so a `;` or `[` inside
+// them does not stop it) up to a `;`, a `[`, or a line that begins an entry.
+struct line_then_entry : pg::seq<newline, pg::star<pg::one<' ', '\t'>>, new_entry_ahead> {};
+struct recover_stop : pg::sor<pg::one<';'>, pg::one<'['>, line_then_entry> {};
+using recover_body = pg::plus<pg::not_at<recover_stop>, pg::sor<string_token, comment, pg::any>>;
+struct skipped_text : pg::disable<recover_body> {};
+struct unexpected : pg::disable<recover_body> {};
+
+template <unsigned D> struct dataset;
+template <unsigned D> struct value : pg::sor<string_seq, dataset<D>, bare> {};
+template <unsigned D> struct field : pg::opt<pg::not_at<new_entry_ahead>, value<D>> {};
+
+struct value_start : pg::sor<string_open, pg::one<'{'>, bare_char> {};
+struct separator_ahead : pg::sor<pg::one<','>, pg::seq<pg::not_at<new_entry_ahead>, value_start>> {};
+struct separator : pg::sor<comma, missing_comma> {};
+template <unsigned D> struct next_field : pg::seq<skip, separator, skip, field<D>> {};
+template <unsigned D>
+struct field_list : pg::seq<field<D>, pg::star<pg::at<skip, separator_ahead>, next_field<D>>> {};
+
+template <unsigned D>
+struct open_dataset : pg::seq<lbrace, skip, field_list<D + 1>,
+                              pg::sor<pg::seq<pg::at<skip, pg::one<'}'>>, skip, rbrace>, missing_rbrace>> {};
+struct too_deep_dataset : pg::seq<deep_lbrace, pg::opt<skipped_text>> {};
+template <unsigned D>
+struct dataset : std::conditional_t<(D < max_nesting), open_dataset<D>, too_deep_dataset> {};
+
+struct sync_ahead : pg::sor<new_entry_ahead, pg::one<'['>, pg::eof> {};
+struct entry_end : pg::sor<pg::seq<pg::at<skip, pg::one<';'>>, skip, semicolon>,
+                           pg::seq<pg::at<skip, sync_ahead>, missing_semicolon>,
+                           pg::seq<skip, unexpected, pg::opt<semicolon>>> {};
+struct entry_body : pg::seq<pg::at<skip, pg::one<'='>>, skip, equals, skip, field_list<0>, entry_end> {};
+struct entry_without_equals : pg::seq<missing_equals, pg::opt<skipped_text>, pg::opt<semicolon>> {};
+struct entry : pg::seq<keyword, pg::sor<entry_body, entry_without_equals>> {};
+
+// ---- file -----------------------------------------------------------------------
+struct item_start : pg::sor<pg::one<' ', '\t', '\r', '\n', '$', '['>, pg::identifier_other> {};
+struct stray : pg::plus<pg::not_at<item_start>, pg::any> {};
+struct item : pg::sor<trivia, section_header, entry, stray> {};
+struct file : pg::seq<pg::star<item>, pg::eof> {};
+
+}  // namespace edsc::grammar
