@@ -6,8 +6,8 @@ namespace edsc {
 
 namespace {
 constexpr std::array rules{
-#define EDSC_DIAG(sym, name, level, group, summary) \
-  rule_info{diag_id::sym, name, severity::level, group, summary},
+#define EDSC_DIAG(sym, name, level, group, summary, explanation, bad, good) \
+  rule_info{diag_id::sym, name, severity::level, group, summary, explanation, bad, good},
 #include "diag/catalogue.def"
 #undef EDSC_DIAG
 };
@@ -30,6 +30,13 @@ std::optional<diag_id> find_rule(std::string_view name) {
   for (const auto& r : rules) {
     if (r.name == name) return r.id;
   }
+  return std::nullopt;
+}
+
+std::optional<severity> parse_severity(std::string_view name) {
+  if (name == "error") return severity::error;
+  if (name == "warning") return severity::warning;
+  if (name == "note") return severity::note;
   return std::nullopt;
 }
 

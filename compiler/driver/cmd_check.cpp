@@ -1,69 +1,166 @@
+#include <algorithm>
+#include <atomic>
+#include <condition_variable>
 #include <map>
 #include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
 
 #include <fmt/format.h>
 
+#include "check/check_file.hpp"
 #include "diag/render_text.hpp"
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
 #include "io/collect_inputs.hpp"
-#include "parse/parser.hpp"
 
 namespace edsc::driver {
 
 namespace {
 
-struct check_options {
+enum class report_format { text, json, sarif };
+
+struct check_cli {
   std::vector<std::string> inputs;
+  std::vector<std::string> warning_flags;
   color_mode color = color_mode::auto_detect;
+  report_format format = report_format::text;
+  std::size_t max_errors = 0;  // 0: no limit
+  unsigned jobs = 0;           // 0: one per core
 };
 
-int run_check(const check_options& opt) {
-  const auto inputs = io::collect_inputs(opt.inputs);
+// Checks files on worker threads; hands results back in input order so the
+// output is the same whatever the scheduling.
+class ordered_checker {
+ public:
+  ordered_checker(const std::vector<std::string>& files, const check_options& options, unsigned jobs)
+      : files_(files), options_(options), results_(files.size()) {
+    const unsigned n = std::max(1u, std::min<unsigned>(jobs, static_cast<unsigned>(files.size())));
+    for (unsigned i = 0; i < n; ++i) workers_.emplace_back([this] { work(); });
+  }
+  ~ordered_checker() {
+    for (auto& w : workers_) w.join();
+  }
+
+  checked_file take(std::size_t i) {
+    std::unique_lock lock(mutex_);
+    ready_.wait(lock, [&] { return results_[i].has_value(); });
+    auto out = std::move(*results_[i]);
+    results_[i].reset();
+    return out;
+  }
+
+ private:
+  void work() {
+    for (std::size_t i = next_++; i < files_.size(); i = next_++) {
+      auto result = check_file(files_[i], options_);
+      {
+        std::lock_guard lock(mutex_);
+        results_[i] = std::move(result);
+      }
+      ready_.notify_all();
+    }
+  }
+
+  const std::vector<std::string>& files_;
+  const check_options& options_;
+  std::vector<std::optional<checked_file>> results_;
+  std::atomic<std::size_t> next_{0};
+  std::mutex mutex_;
+  std::condition_variable ready_;
+  std::vector<std::thread> workers_;
+};
+
+std::string summary_line(const report_totals& t, std::size_t hidden) {
+  auto plural = [](std::size_t n, const char* word) { return fmt::format("{} {}{}", n, word, n == 1 ? "" : "s"); };
+  std::string line = fmt::format("{} checked: {}, {}", plural(t.files, "file"), plural(t.errors, "error"),
+                                 plural(t.warnings, "warning"));
+  if (hidden > 0) line += fmt::format(" ({} not shown: --max-errors)", hidden);
+  return line + "\n";
+}
+
+int run_check(const check_cli& cli) {
+  check_options options;
+  for (const auto& flag : cli.warning_flags) {
+    if (auto err = options.policy.add_flag(flag)) {
+      print_error(*err);
+      return exit_failure;
+    }
+  }
+  const auto inputs = io::collect_inputs(cli.inputs);
   for (const auto& e : inputs.errors) print_error(e.message);
   bool io_failed = !inputs.errors.empty();
 
-  const text_style style{use_color(opt.color, stdout)};
-  std::size_t files = 0, errors = 0, warnings = 0;
-  std::string out;
-  for (const auto& path : inputs.files) {
-    auto read = io::read_source(path);
-    if (auto* err = std::get_if<io::io_error>(&read)) {
-      print_error(err->message);
-      io_failed = true;
-      continue;
+  const unsigned jobs = cli.jobs > 0 ? cli.jobs : std::max(1u, std::thread::hardware_concurrency());
+  const text_style style{cli.format == report_format::text && use_color(cli.color, stdout)};
+  report_totals totals;
+  std::size_t shown_errors = 0, hidden = 0;
+  std::vector<file_report> kept;  // for the whole-run formats
+  {
+    ordered_checker checker(inputs.files, options, jobs);
+    std::string out;
+    for (std::size_t i = 0; i < inputs.files.size(); ++i) {
+      auto result = checker.take(i);
+      if (result.io_error) {
+        print_error(*result.io_error);
+        io_failed = true;
+        continue;
+      }
+      auto& report = result.report;
+      ++totals.files;
+      totals.add(report.diags);
+      if (cli.max_errors > 0) {
+        std::erase_if(report.diags, [&](const diagnostic& d) {
+          if (d.level != severity::error) return shown_errors >= cli.max_errors;
+          if (shown_errors < cli.max_errors) {
+            ++shown_errors;
+            return false;
+          }
+          ++hidden;
+          return true;
+        });
+      }
+      if (cli.format == report_format::text) {
+        out.clear();
+        for (const auto& d : report.diags) render_text(*report.source, d, style, out);
+        write_all(stdout, out);
+      } else {
+        kept.push_back(std::move(report));
+      }
     }
-    const auto& src = *std::get<std::unique_ptr<source_file>>(read);
-    const auto result = parse(src);
-    ++files;
-    out.clear();
-    for (const auto& d : result.diags) {
-      render_text(src, d, style, out);
-      errors += d.level == severity::error ? 1 : 0;
-      warnings += d.level == severity::warning ? 1 : 0;
-    }
-    write_all(stdout, out);
   }
-  write_all(stdout, fmt::format("{} file{} checked: {} error{}, {} warning{}\n", files,
-                                files == 1 ? "" : "s", errors, errors == 1 ? "" : "s", warnings,
-                                warnings == 1 ? "" : "s"));
+  switch (cli.format) {
+    case report_format::text: write_all(stdout, summary_line(totals, hidden)); break;
+    case report_format::json: write_all(stdout, render_json(kept, totals)); break;
+    case report_format::sarif: write_all(stdout, render_sarif(kept)); break;
+  }
   std::fflush(stdout);
   if (io_failed) return exit_failure;
-  return errors > 0 ? exit_findings : exit_ok;
+  return totals.errors > 0 ? exit_findings : exit_ok;
 }
 
 }  // namespace
 
 void register_check(CLI::App& app, command_action& run) {
-  auto opt = std::make_shared<check_options>();
+  auto cli = std::make_shared<check_cli>();
   auto* cmd = app.add_subcommand("check", "Parse and check EDS files, reporting problems like a compiler");
-  cmd->add_option("inputs", opt->inputs, "EDS files, or directories searched recursively for *.eds")
+  cmd->add_option("inputs", cli->inputs, "EDS files, or directories searched recursively for *.eds")
       ->required();
   const std::map<std::string, color_mode> colors{
       {"auto", color_mode::auto_detect}, {"always", color_mode::always}, {"never", color_mode::never}};
-  cmd->add_option("--color", opt->color, "Colour the output: auto (on a terminal), always, never")
+  cmd->add_option("--color", cli->color, "Colour the text output: auto (on a terminal), always, never")
       ->transform(CLI::CheckedTransformer(colors, CLI::ignore_case));
-  cmd->callback([&run, opt] { run = [opt] { return run_check(*opt); }; });
+  const std::map<std::string, report_format> formats{
+      {"text", report_format::text}, {"json", report_format::json}, {"sarif", report_format::sarif}};
+  cmd->add_option("--format", cli->format, "Report format: text, json, sarif (SARIF 2.1.0)")
+      ->transform(CLI::CheckedTransformer(formats, CLI::ignore_case));
+  cmd->add_option("-W", cli->warning_flags,
+                  "-Werror, -W<id|group>, -Wno-<id|group>, -Werror=<id|group>, -Wno-error=<id|group>")
+      ->allow_extra_args(false);
+  cmd->add_option("--max-errors", cli->max_errors, "Show at most N errors (0: all)");
+  cmd->add_option("-j,--jobs", cli->jobs, "Files checked in parallel (default: one per core)");
+  cmd->callback([&run, cli] { run = [cli] { return run_check(*cli); }; });
 }
 
 }  // namespace edsc::driver

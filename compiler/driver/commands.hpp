@@ -14,5 +14,6 @@ using command_action = std::function<int()>;
 
 void register_check(CLI::App& app, command_action& run);
 void register_edit(CLI::App& app, command_action& run);
+void register_rules(CLI::App& app, command_action& run);
 
 }  // namespace edsc::driver

@@ -1,0 +1,22 @@
+#include "check/check_file.hpp"
+
+#include "io/read_file.hpp"
+#include "parse/parser.hpp"
+
+namespace edsc {
+
+checked_file check_file(const std::string& path, const check_options& options) {
+  checked_file out;
+  auto read = io::read_source(path);
+  if (auto* err = std::get_if<io::io_error>(&read)) {
+    out.io_error = err->message;
+    return out;
+  }
+  out.report.source = std::move(std::get<std::unique_ptr<source_file>>(read));
+  auto parsed = parse(*out.report.source);
+  out.report.diags = std::move(parsed.diags);
+  options.policy.apply(out.report.diags);
+  return out;
+}
+
+}  // namespace edsc

@@ -1,0 +1,50 @@
+#include <gtest/gtest.h>
+
+#include "diag/render_text.hpp"
+
+namespace {
+
+std::string render(const edsc::source_file& src, edsc::diagnostic d) {
+  std::string out;
+  edsc::render_text(src, d, {}, out);
+  return out;
+}
+
+TEST(render_text, location_line_caret_and_fixit) {
+  const edsc::source_file src("a.eds", "[IO_Info]\nInput1 = 6 \"x\";\n");
+  auto d = edsc::make_diagnostic(edsc::diag_id::syntax_missing_comma, {20, 20}, "expected ','");
+  d.fixits.push_back({{20, 20}, ","});
+  EXPECT_EQ(render(src, d),
+            "a.eds:2:11: error: expected ',' [syntax-missing-comma]\n"
+            "    2 | Input1 = 6 \"x\";\n"
+            "      |           ^\n"
+            "      |           ,\n");
+}
+
+TEST(render_text, tabs_keep_the_caret_aligned) {
+  const edsc::source_file src("a.eds", "[A]\n\tX = 1 2;\n");
+  auto d = edsc::make_diagnostic(edsc::diag_id::syntax_unexpected, {9, 12}, "m");
+  const auto out = render(src, d);
+  EXPECT_NE(out.find("    2 |         X = 1 2;\n"), std::string::npos) << out;
+  EXPECT_NE(out.find("      |             ^~~\n"), std::string::npos) << out;
+}
+
+TEST(render_text, control_and_invalid_bytes_are_shown_as_hex) {
+  const edsc::source_file src("a.eds", std::string("[A]\nX\x01\xB5 = 1;\n"));
+  auto d = edsc::make_diagnostic(edsc::diag_id::syntax_stray, {5, 6}, "m");
+  const auto out = render(src, d);
+  EXPECT_NE(out.find("X<01><B5> = 1;"), std::string::npos) << out;
+  EXPECT_NE(out.find("|  ^~~~\n"), std::string::npos) << out;
+}
+
+TEST(render_text, long_lines_are_cut_to_a_window) {
+  std::string text = "[A]\nX = " + std::string(100000, '1') + " =;\n";
+  const edsc::source_file src("a.eds", text);
+  const auto at = static_cast<std::uint32_t>(text.find(" ="));
+  auto d = edsc::make_diagnostic(edsc::diag_id::syntax_unexpected, {at + 1, at + 2}, "m");
+  const auto out = render(src, d);
+  EXPECT_LT(out.size(), 600u);
+  EXPECT_NE(out.find("..."), std::string::npos);
+}
+
+}  // namespace
