@@ -46,7 +46,8 @@ struct lbracket : pg::one<'['> {};
 struct rbracket : pg::one<']'> {};
 struct section_name : name_text {};
 struct good_header : pg::seq<lbracket, pg::opt<blank>, section_name, pg::opt<blank>, rbracket> {};
-struct bad_header_body : pg::star<pg::not_one<']', '\r', '\n'>> {};
+// Stops at `$` too: a comment after a broken header stays a comment.
+struct bad_header_body : pg::star<pg::not_one<']', '\r', '\n', '$'>> {};
 struct bad_header : pg::seq<lbracket, bad_header_body, pg::opt<rbracket>> {};
 struct section_header : pg::sor<pg::seq<pg::at<good_header>, good_header>, bad_header> {};
 
@@ -65,7 +66,9 @@ struct keyword : keyword_text {};
 struct equals : pg::one<'='> {};
 struct comma : pg::one<','> {};
 struct semicolon : pg::one<';'> {};
-struct new_entry_ahead : pg::seq<keyword_text, skip, pg::one<'='>> {};
+// A keyword has a letter or `_` (`1_Foo`, `Param1`); `1 = 2` is a value, not an entry.
+struct entry_keyword_text : pg::seq<pg::star<pg::digit>, pg::sor<pg::alpha, pg::one<'_'>>, pg::star<pg::identifier_other>> {};
+struct new_entry_ahead : pg::seq<entry_keyword_text, skip, pg::one<'='>> {};
 
 struct bare_char : pg::not_one<',', ';', '"', '{', '}', '$', ' ', '\t', '\r', '\n', '=', '[', ']'> {};
 // Words separated by single-line blanks stay one value: some tools write
@@ -118,7 +121,9 @@ struct entry : pg::seq<keyword, pg::sor<entry_body, entry_without_equals>> {};
 
 // ---- file -----------------------------------------------------------------------
 struct item_start : pg::sor<pg::one<' ', '\t', '\r', '\n', '$', '['>, pg::identifier_other> {};
-struct stray : pg::plus<pg::not_at<item_start>, pg::any> {};
+// Stray text runs to the end of its line (or a comment): one error per line,
+// since the usual cause is a comment that lost its `$`.
+struct stray : pg::seq<pg::plus<pg::not_at<item_start>, pg::any>, pg::star<pg::not_one<'\r', '\n', '$'>>> {};
 struct item : pg::sor<trivia, section_header, entry, stray> {};
 struct file : pg::seq<pg::star<item>, pg::eof> {};
 
