@@ -1,5 +1,9 @@
 #include "check/check_file.hpp"
 
+#include "check/context.hpp"
+
+#include <algorithm>
+
 #include "io/read_file.hpp"
 #include "parse/parser.hpp"
 
@@ -15,6 +19,9 @@ checked_file check_file(const std::string& path, const check_options& options) {
   out.report.source = std::move(std::get<std::unique_ptr<source_file>>(read));
   auto parsed = parse(*out.report.source);
   out.report.diags = std::move(parsed.diags);
+  run_checks(check_context{parsed.tree, out.report.diags});
+  std::stable_sort(out.report.diags.begin(), out.report.diags.end(),
+                   [](const diagnostic& a, const diagnostic& b) { return a.where.begin < b.where.begin; });
   options.policy.apply(out.report.diags);
   return out;
 }

@@ -1,0 +1,17 @@
+#pragma once
+#include <string>
+#include <string_view>
+
+namespace edsc {
+
+// Section names and keywords compare case-insensitively (a published file
+// writes [variant_io_info]); this is the folded key.
+[[nodiscard]] inline std::string fold_name(std::string_view name) {
+  std::string out(name);
+  for (auto& c : out) {
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+  }
+  return out;
+}
+
+}  // namespace edsc
