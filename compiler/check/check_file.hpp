@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -9,6 +10,7 @@ namespace edsc {
 
 struct check_options {
   diag_policy policy;
+  std::uint8_t networks = 0;  // model::network bits from --network; 0: detect
 };
 
 struct checked_file {

@@ -5,9 +5,17 @@
 namespace edsc {
 
 void check_structure(const check_context& ctx);
+void check_values(const check_context& ctx);
+void check_identity(const check_context& ctx);
+void check_io_info(const check_context& ctx);
+void check_params(const check_context& ctx);
 
 void run_checks(const check_context& ctx) {
   check_structure(ctx);
+  check_values(ctx);
+  check_identity(ctx);
+  check_io_info(ctx);
+  check_params(ctx);
 }
 
 }  // namespace edsc

@@ -14,6 +14,7 @@
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
 #include "io/collect_inputs.hpp"
+#include "model/identity.hpp"
 
 namespace edsc::driver {
 
@@ -28,6 +29,7 @@ struct check_cli {
   report_format format = report_format::text;
   std::size_t max_errors = 0;  // 0: no limit
   unsigned jobs = 0;           // 0: one per core
+  std::uint8_t networks = 0;   // --network; 0: detect per file
 };
 
 // Checks files on worker threads; hands results back in input order so the
@@ -82,6 +84,7 @@ std::string summary_line(const report_totals& t, std::size_t hidden) {
 
 int run_check(const check_cli& cli) {
   check_options options;
+  options.networks = cli.networks;
   for (const auto& flag : cli.warning_flags) {
     if (auto err = options.policy.add_flag(flag)) {
       print_error(*err);
@@ -159,6 +162,12 @@ void register_check(CLI::App& app, command_action& run) {
                   "-Werror, -W<id|group>, -Wno-<id|group>, -Werror=<id|group>, -Wno-error=<id|group>")
       ->allow_extra_args(false);
   cmd->add_option("--max-errors", cli->max_errors, "Show at most N errors (0: all)");
+  const std::map<std::string, std::uint8_t> networks{{"devicenet", model::net_devicenet},
+                                                      {"ethernetip", model::net_ethernetip},
+                                                      {"controlnet", model::net_controlnet}};
+  cmd->add_option("--network", cli->networks,
+                  "Check as this network (devicenet, ethernetip, controlnet) instead of detecting it")
+      ->transform(CLI::CheckedTransformer(networks, CLI::ignore_case));
   cmd->add_option("-j,--jobs", cli->jobs, "Files checked in parallel (default: one per core)");
   cmd->callback([&run, cli] { run = [cli] { return run_check(*cli); }; });
 }

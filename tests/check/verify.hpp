@@ -4,7 +4,8 @@
 //     Input1 = 1, 6 "20 04";   $ expected-error{{expected ','}}
 // and `expected-warning@+1{{...}}` / `@-2` address a nearby line. The text in
 // braces must occur in "message [id]". Every diagnostic must be expected and
-// every expectation met.
+// every expectation met. A line `$ verify-only: syntax structure` limits the
+// comparison to diagnostics of those groups (for files that test one family).
 #include <string>
 #include <vector>
 

@@ -1,0 +1,127 @@
+// [Params] ParamN (EDS_FORMAT.md §3.7, §7 rules 14-19).
+#include <fmt/format.h>
+
+#include "check/context.hpp"
+#include "check/value_order.hpp"
+#include "schema/cip_types.hpp"
+
+namespace edsc {
+
+namespace {
+
+bool empty_or_zero(const model::value& v) { return !v.present() || (v.is_integer() && v.as_uint() == 0); }
+
+void check_type(const check_context& ctx, const model::param& p) {
+  if (p.reserved.is_integer() && p.reserved.as_uint() != 0) {
+    ctx.report(diag_id::param_reserved, ctx.where(p.reserved),
+               fmt::format("Param{} field 1 is {}; it is reserved and must be 0", p.number, p.reserved.as_uint()));
+  }
+  if (p.type == nullptr) {
+    if (p.data_type.is_integer()) {
+      ctx.report(diag_id::param_data_type, ctx.where(p.data_type),
+                 fmt::format("Param{} data type 0x{:02X} is not a CIP type code", p.number, p.data_type.as_uint()));
+    }
+    return;
+  }
+  if (p.legacy_type) {
+    ctx.report(diag_id::param_legacy_type, ctx.where(p.data_type),
+               fmt::format("Param{} uses the legacy DeviceNet type code {} for {}; write 0x{:02X}", p.number,
+                           p.data_type.as_uint(), p.type->name, p.type->code));
+  }
+  if (p.type->size > 0 && p.data_size.is_integer() && p.data_size.as_uint() != p.type->size) {
+    ctx.report(diag_id::param_data_size, ctx.where(p.data_size),
+               fmt::format("Param{} is {} ({} byte{}) but its data size says {}", p.number, p.type->name,
+                           p.type->size, p.type->size == 1 ? "" : "s", p.data_size.as_uint()));
+  }
+}
+
+void check_limits(const check_context& ctx, const model::param& p) {
+  if (p.type == nullptr || p.type->cls == schema::type_class::string || p.type->cls == schema::type_class::epath ||
+      p.type->cls == schema::type_class::stringi) {
+    return;
+  }
+  const auto& lo = p.min;
+  const auto& hi = p.max;
+  const auto& def = p.default_value;
+  if (is_number(lo) && is_number(hi) && compare_numbers(lo, hi) > 0) {
+    ctx.report_with_note(diag_id::param_min_max, ctx.where(lo),
+                         fmt::format("Param{} minimum {} is greater than its maximum {}", p.number, lo.raw, hi.raw),
+                         ctx.where(hi), "the maximum is here");
+    return;
+  }
+  if (!is_number(def)) return;
+  if (is_number(lo) && compare_numbers(def, lo) < 0) {
+    ctx.report_with_note(diag_id::param_default_range, ctx.where(def),
+                         fmt::format("Param{} default {} is below its minimum {}", p.number, def.raw, lo.raw),
+                         ctx.where(lo), "the minimum is here");
+  } else if (is_number(hi) && compare_numbers(def, hi) > 0) {
+    ctx.report_with_note(diag_id::param_default_range, ctx.where(def),
+                         fmt::format("Param{} default {} is above its maximum {}", p.number, def.raw, hi.raw),
+                         ctx.where(hi), "the maximum is here");
+  }
+}
+
+void check_link_path(const check_context& ctx, const model::param& p) {
+  if (p.link_path.invalid() || !(p.link_path_size.is_integer() || !p.link_path_size.present())) return;
+  const auto* path = ctx.dev.path_of(p.link_path);
+  const std::uint32_t bytes = path != nullptr ? path->byte_count : 0;
+  const std::uint64_t size = p.link_path_size.present() ? p.link_path_size.as_uint() : 0;
+  if (size == bytes) return;
+  if (size != 0 && bytes != 0) {
+    auto& d = ctx.report(diag_id::param_link_path_size, ctx.where(p.link_path_size),
+                         fmt::format("Param{} link path size is {} but the path holds {} bytes", p.number, size,
+                                     bytes));
+    d.fixits.push_back({ctx.where(p.link_path_size), std::to_string(bytes)});
+  } else {
+    ctx.report(diag_id::param_link_path_size, ctx.where(size != 0 ? p.link_path_size : p.link_path),
+               size != 0 ? fmt::format("Param{} has a link path size of {} but no link path", p.number, size)
+                         : fmt::format("Param{} has a link path but its size is empty or 0", p.number));
+  }
+}
+
+void check_scaling(const check_context& ctx, const model::param& p) {
+  if (p.scaling_divisor.is_integer() && p.scaling_divisor.as_uint() == 0) {
+    ctx.report(diag_id::param_scaling_divisor_zero, ctx.where(p.scaling_divisor),
+               fmt::format("Param{} scaling divisor is 0", p.number));
+  }
+  for (const auto* link : {&p.multiplier_link, &p.divisor_link, &p.base_link, &p.offset_link}) {
+    if (!link->is_integer() || link->as_uint() == 0) continue;
+    if (ctx.dev.find_param(static_cast<std::uint32_t>(link->as_uint())) == nullptr) {
+      ctx.report(diag_id::param_scaling_link, ctx.where(*link),
+                 fmt::format("Param{} scaling link names Param{}, which does not exist", p.number, link->as_uint()));
+    }
+  }
+  if (!p.descriptor.is_integer()) return;
+  const auto desc = p.descriptor.as_uint();
+  const bool scaling_given = p.scaling_multiplier.present() || p.scaling_divisor.present() ||
+                             p.scaling_base.present() || p.scaling_offset.present();
+  if ((desc & model::pd_scaling) && !scaling_given) {
+    ctx.report(diag_id::param_scaling_descriptor, ctx.where(p.descriptor),
+               fmt::format("Param{} descriptor 0x{:04X} announces scaling (bit 2) but fields 13-16 are empty",
+                           p.number, desc));
+  }
+  const bool links_given = !empty_or_zero(p.multiplier_link) || !empty_or_zero(p.divisor_link) ||
+                           !empty_or_zero(p.base_link) || !empty_or_zero(p.offset_link);
+  if ((desc & model::pd_scaling_links) && !links_given) {
+    ctx.report(diag_id::param_scaling_descriptor, ctx.where(p.descriptor),
+               fmt::format("Param{} descriptor 0x{:04X} announces scaling links (bit 3) but fields 17-20 are empty",
+                           p.number, desc));
+  } else if (!(desc & model::pd_scaling_links) && links_given) {
+    ctx.report(diag_id::param_scaling_descriptor, ctx.where(p.descriptor),
+               fmt::format("Param{} has scaling links but descriptor 0x{:04X} does not set bit 3", p.number, desc));
+  }
+}
+
+}  // namespace
+
+void check_params(const check_context& ctx) {
+  for (const auto& p : ctx.dev.params) {
+    if (p.kind == model::param_kind::constructed_param) continue;  // layout unconfirmed
+    check_type(ctx, p);
+    check_limits(ctx, p);
+    check_link_path(ctx, p);
+    check_scaling(ctx, p);
+  }
+}
+
+}  // namespace edsc
