@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
     command_action run;
     register_check(app, run);
     register_edit(app, run);
+    register_dump(app, run);
     register_rules(app, run);
     try {
       app.parse(argc, argv);

@@ -1,0 +1,51 @@
+#include <memory>
+
+#include "driver/commands.hpp"
+#include "driver/output.hpp"
+#include "emit/emit_json.hpp"
+#include "io/read_file.hpp"
+#include "lower/lower.hpp"
+#include "parse/parser.hpp"
+
+namespace edsc::driver {
+
+namespace {
+
+struct dump_options {
+  std::string input;
+  bool json = false;
+  int indent = 2;
+};
+
+int run_dump(const dump_options& opt) {
+  auto read = io::read_source(opt.input);
+  if (auto* err = std::get_if<io::io_error>(&read)) {
+    print_error(err->message);
+    return exit_failure;
+  }
+  const auto& src = *std::get<std::unique_ptr<source_file>>(read);
+  const auto parsed = parse(src);
+  diagnostics diags;
+  const auto dev = lower(parsed.tree, diags);
+  std::string out = emit::to_json(dev, src).dump(opt.indent < 0 ? -1 : opt.indent);
+  out.push_back('\n');
+  if (!write_all(stdout, out)) return exit_failure;
+  std::fflush(stdout);
+  // Dumping succeeds even for a file with syntax errors: the tree covers
+  // every byte and the model keeps what it could not type. Findings are
+  // `edsc check`'s business.
+  return exit_ok;
+}
+
+}  // namespace
+
+void register_dump(CLI::App& app, command_action& run) {
+  auto opt = std::make_shared<dump_options>();
+  auto* cmd = app.add_subcommand("dump", "Print the typed model of one EDS file");
+  cmd->add_option("input", opt->input, "The EDS file")->required();
+  cmd->add_flag("--json", opt->json, "Write the model as JSON (docs/dump-json.md); currently the only format");
+  cmd->add_option("--indent", opt->indent, "JSON indentation; -1 for one line")->default_val(2);
+  cmd->callback([&run, opt] { run = [opt] { return run_dump(*opt); }; });
+}
+
+}  // namespace edsc::driver

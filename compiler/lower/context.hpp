@@ -1,0 +1,75 @@
+#pragma once
+// Internal to lowering: the state shared by the per-family lowerers.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "cst/cst.hpp"
+#include "model/device.hpp"
+#include "schema/cip_types.hpp"
+#include "schema/schema.hpp"
+
+namespace edsc::lowering {
+
+struct context {
+  const cst::tree& tree;
+  model::device& dev;
+  std::uint32_t section = model::none;  // CST index of the section being lowered
+  std::vector<std::uint32_t> deferred_enums;  // EnumN entries, lowered once all ParamN are known
+
+  [[nodiscard]] std::uint32_t field_count(std::uint32_t entry) const {
+    return tree.entries[entry].fields_count;
+  }
+  [[nodiscard]] model::origin origin_of(std::uint32_t entry, std::uint32_t field) const;
+
+  // Field `index` of `entry` typed by `desc` (nullptr: typed by syntax only).
+  // Fields past the end of the entry come back absent, pointing at its end.
+  [[nodiscard]] model::value field(std::uint32_t entry, std::uint32_t index,
+                                   const schema::field_desc* desc);
+  // A value typed by a CIP type (ParamN min/max/default, EnumN values).
+  [[nodiscard]] model::value typed(std::uint32_t entry, std::uint32_t index,
+                                   const schema::cip_type_info* type);
+
+  // Fills the named slots from the entry's fields in schema order; fields
+  // beyond the slots go to `extra` (when given).
+  template <class T, std::size_t N>
+  void fill(std::uint32_t entry, const schema::keyword_desc& k, T& obj,
+            const std::array<model::value T::*, N>& slots, std::vector<model::value>* extra,
+            const schema::cip_type_info* typed_as = nullptr) {
+    for (std::uint32_t i = 0; i < N; ++i) {
+      const auto* d = schema::field_at(k, i);
+      obj.*slots[i] = (d && d->type == schema::value_type::typed) ? typed(entry, i, typed_as)
+                                                                  : field(entry, i, d);
+    }
+    if (!extra) return;
+    for (std::uint32_t i = N; i < field_count(entry); ++i)
+      extra->push_back(field(entry, i, schema::field_at(k, i)));
+  }
+
+  // Keeps a whole entry in device::unknown.
+  void keep_raw(std::uint32_t entry, model::raw_reason why, const schema::keyword_desc* k = nullptr) {
+    dev.unknown.push_back({entry, tree.entries[entry].section, tree.text(tree.entries[entry].keyword), why,
+                           all_fields(entry, k)});
+  }
+
+  // All fields of the entry, typed by the keyword's descriptors.
+  [[nodiscard]] std::vector<model::value> all_fields(std::uint32_t entry, const schema::keyword_desc* k);
+};
+
+// Per-family lowerers: one call per entry the schema recognised.
+void lower_identity(context& c, std::uint32_t entry, const schema::keyword_match& m);
+void lower_io_info(context& c, model::io_info& io, std::uint32_t entry, const schema::keyword_match& m);
+void lower_params(context& c, std::uint32_t entry, const schema::keyword_match& m);
+void lower_enum(context& c, std::uint32_t entry, const schema::keyword_match& m);
+void lower_assembly(context& c, std::uint32_t entry, const schema::keyword_match& m);
+void lower_connection(context& c, std::uint32_t entry, const schema::keyword_match& m);
+void lower_other(context& c, std::uint32_t entry, const schema::keyword_match& m);  // port, capacity, modular
+void lower_object_setting(context& c, std::uint32_t entry, const schema::keyword_match& m);
+[[nodiscard]] model::setting make_setting(context& c, std::uint32_t entry, const schema::keyword_match& m);
+
+// Second pass: reference targets, networks.
+void build_index(model::device& dev);
+void resolve_references(model::device& dev);
+void detect_networks(model::device& dev);
+
+}  // namespace edsc::lowering

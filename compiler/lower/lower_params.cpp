@@ -1,0 +1,105 @@
+// [ParamClass], [Params], [EnumPar] and [Groups] (EDS_FORMAT.md §3.6-3.9).
+#include "lower/context.hpp"
+#include "model/slots.hpp"
+
+namespace edsc::lowering {
+
+using schema::entry_id;
+
+namespace {
+
+void lower_param(context& c, std::uint32_t entry, const schema::keyword_match& m) {
+  const auto& k = *m.desc;
+  model::param p;
+  p.number = m.number;
+  p.from = c.origin_of(entry, model::none);
+  switch (k.id) {
+    case entry_id::proxy_param_n: p.kind = model::param_kind::proxy_param; break;
+    case entry_id::proxied_param_n: p.kind = model::param_kind::proxied_param; break;
+    case entry_id::constructed_param_n: p.kind = model::param_kind::constructed_param; break;
+    default: break;
+  }
+  if (p.kind == model::param_kind::constructed_param) {
+    // Layout unknown (§3.7.4): every field kept as written.
+    p.extra = c.all_fields(entry, &k);
+    c.dev.params.push_back(std::move(p));
+    return;
+  }
+  // The data type comes first: it types min, max and default.
+  p.data_type = c.field(entry, 4, schema::field_at(k, 4));
+  if (p.data_type.is_integer()) p.type = schema::resolve_param_type(p.data_type.magnitude, &p.legacy_type);
+  c.fill(entry, k, p, model::slots::param, &p.extra, p.type);
+  if (p.type && (p.type->cls == schema::type_class::string || p.type->cls == schema::type_class::stringi)) {
+    // String parameters give min/max as length limits (EDS_FORMAT.md §3.7.1).
+    static constexpr schema::field_desc length{"length", schema::value_type::integer, schema::code::UINT};
+    p.min = c.field(entry, 9, &length);
+    p.max = c.field(entry, 10, &length);
+  }
+  c.dev.params.push_back(std::move(p));
+}
+
+void lower_group(context& c, std::uint32_t entry, const schema::keyword_match& m) {
+  const auto& k = *m.desc;
+  model::group g;
+  g.number = m.number;
+  g.from = c.origin_of(entry, model::none);
+  c.fill(entry, k, g, model::slots::group, &g.members);
+  c.dev.groups.push_back(std::move(g));
+}
+
+void lower_enum_par(context& c, std::uint32_t entry, const schema::keyword_match& m) {
+  model::enum_par e;
+  e.number = m.number;
+  e.from = c.origin_of(entry, model::none);
+  e.strings = c.all_fields(entry, m.desc);
+  c.dev.enum_pars.push_back(std::move(e));
+}
+
+void lower_param_class(context& c, std::uint32_t entry, const schema::keyword_match& m) {
+  auto& pc = c.dev.parameter_class;
+  model::value* slot = nullptr;
+  switch (m.desc->id) {
+    case entry_id::pc_max_inst: slot = &pc.max_inst; break;
+    case entry_id::pc_descriptor: slot = &pc.descriptor; break;
+    case entry_id::pc_cfg_assembly: slot = &pc.cfg_assembly; break;
+    case entry_id::pc_safety_cfg_assembly: slot = &pc.safety_cfg_assembly; break;
+    default: break;
+  }
+  if (!slot) return c.keep_raw(entry, model::raw_reason::unknown_keyword, m.desc);
+  if (slot->from.entry != model::none) return c.keep_raw(entry, model::raw_reason::duplicate, m.desc);
+  *slot = c.field(entry, 0, schema::field_at(*m.desc, 0));
+  if (c.field_count(entry) > 1) c.keep_raw(entry, model::raw_reason::extra_fields, m.desc);
+}
+
+}  // namespace
+
+void lower_params(context& c, std::uint32_t entry, const schema::keyword_match& m) {
+  switch (m.desc->id) {
+    case entry_id::param_n:
+    case entry_id::proxy_param_n:
+    case entry_id::proxied_param_n:
+    case entry_id::constructed_param_n: return lower_param(c, entry, m);
+    case entry_id::enum_n: c.deferred_enums.push_back(entry); return;
+    case entry_id::enum_par_n: return lower_enum_par(c, entry, m);
+    case entry_id::group_n: return lower_group(c, entry, m);
+    default: return lower_param_class(c, entry, m);
+  }
+}
+
+// EnumN values are typed by ParamN's data type, so this runs after every
+// ParamN is known (the order of the two entries in the file is free).
+void lower_enum(context& c, std::uint32_t entry, const schema::keyword_match& m) {
+  model::param_enum e;
+  e.number = m.number;
+  e.from = c.origin_of(entry, model::none);
+  e.param = c.dev.find(schema::ref_kind::param, m.number);
+  const schema::cip_type_info* type = e.param == model::none ? nullptr : c.dev.params[e.param].type;
+  const auto n = c.field_count(entry);
+  const auto* text_desc = schema::field_at(*m.desc, 1);
+  for (std::uint32_t i = 0; i + 1 < n; i += 2)
+    e.pairs.push_back({c.typed(entry, i, type), c.field(entry, i + 1, text_desc)});
+  if (n % 2) e.dangling = c.typed(entry, n - 1, type);
+  c.dev.enums.push_back(std::move(e));
+}
+
+}  // namespace edsc::lowering

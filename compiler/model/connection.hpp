@@ -1,0 +1,48 @@
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "model/value.hpp"
+
+namespace edsc::model {
+
+// ConnectionN field 1 (EDS_FORMAT.md §3.11.2), decoded.
+struct trigger_transport {
+  std::uint16_t transport_classes = 0;  // bit n = class n
+  bool trigger_cyclic = false, trigger_cos = false, trigger_application = false;
+  bool listen_only = false, input_only = false, exclusive_owner = false, redundant_owner = false;
+  bool server = false;          // bit 31
+  std::uint32_t reserved = 0;   // bits 19-23 and 28-30 as found
+};
+
+// One direction of ConnectionN field 2 (§3.11.3).
+struct direction_params {
+  bool fixed = false, variable = false;
+  std::uint8_t real_time_format = 0;  // 0 modeless, 3 heartbeat, 4 run/idle, 5 safety
+  bool type_null = false, type_multicast = false, type_p2p = false, type_reserved = false;
+  bool prio_low = false, prio_high = false, prio_scheduled = false, prio_reserved = false;
+};
+
+struct connection_params {
+  direction_params ot, to;
+  std::uint32_t reserved = 0;  // bits 11, 15 (and the obsolete 4-7) as found
+};
+
+[[nodiscard]] trigger_transport decode_trigger(std::uint32_t v);
+[[nodiscard]] connection_params decode_params(std::uint32_t v);
+
+// ConnectionN. The bit fields are decoded when fields 1/2 are valid integers.
+struct connection {
+  std::uint32_t number = 0;
+  origin from;
+  value trigger, params, ot_rpi, ot_size, ot_format, to_rpi, to_size, to_format,
+      proxy_config_size, proxy_config_format, target_config_size, target_config_format, name,
+      help, path, safety_async, safety_max_consumers;
+  bool decoded = false;
+  trigger_transport tt;
+  connection_params cp;
+  std::vector<value> extra;
+  std::uint32_t section = none;  // [Connection Manager] or a [Connection ManagerN]
+};
+
+}  // namespace edsc::model

@@ -1,0 +1,46 @@
+#pragma once
+// Value decoders for the EDS lexemes of EDS_FORMAT.md §1.6. Pure functions on
+// text: no allocation except where a result needs its own bytes.
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <deque>
+#include <vector>
+
+#include "model/epath.hpp"
+#include "model/value.hpp"
+#include "schema/cip_types.hpp"
+
+namespace edsc::model::decode {
+
+// Integer: decimal with optional sign, or 0x/0X hex. Sets magnitude/negative/
+// hex on `out`; false when the text is not an integer at all.
+[[nodiscard]] bool integer(std::string_view text, value& out);
+// Whether an already-read integer fits the CIP type's range.
+[[nodiscard]] bool fits(const value& v, const schema::cip_type_info& type);
+// Real: digits with optional sign, point and exponent (`.004`, `1.5e3`).
+[[nodiscard]] bool real(std::string_view text, double& out);
+
+// mm-dd-yyyy (1-2 digit month/day, 2 or 4 digit year). `lexed` tells whether
+// the shape was right even when the calendar date is not.
+[[nodiscard]] bool date(std::string_view text, model::date& out, bool& lexed);
+[[nodiscard]] bool time(std::string_view text, time_of_day& out, bool& lexed);
+[[nodiscard]] bool revision(std::string_view text, model::revision& out, bool& lexed);
+
+// Hex bytes and [ParamN] placeholders separated by blanks, decoded into
+// segments. Symbols are copied into `storage`. False when the text does not
+// lex as an EPATH.
+[[nodiscard]] bool epath(std::string_view text, model::epath& out, std::deque<std::string>& storage);
+
+// Removes the quotes (and L prefix) of one string piece; `closed` false when
+// the closing quote is missing.
+[[nodiscard]] std::string_view piece_body(std::string_view piece, bool& wide);
+// Whether a piece body contains a backslash escape.
+[[nodiscard]] bool has_escape(std::string_view body);
+// Appends the body with escapes decoded (\uNNNN becomes UTF-8).
+void unescape_append(std::string_view body, std::string& out);
+
+// Standard Base64 (whitespace ignored). False on any other character or bad padding.
+[[nodiscard]] bool base64(std::string_view text, std::vector<std::uint8_t>& out);
+
+}  // namespace edsc::model::decode
