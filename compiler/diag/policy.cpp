@@ -19,7 +19,13 @@ std::vector<diag_id> rules_named(std::string_view name) {
 
 }  // namespace
 
-diag_policy::diag_policy() : rules_(all_rules().size()) {}
+// Pedantic rules flag what the format allows but a careful author may still
+// want to know; they are off until -Wpedantic (or their own -W<id>).
+diag_policy::diag_policy() : rules_(all_rules().size()) {
+  for (const auto& r : all_rules()) {
+    if (r.group == "pedantic") rules_[static_cast<std::size_t>(r.id)].enabled = false;
+  }
+}
 
 std::optional<std::string> diag_policy::add_flag(std::string_view flag) {
   if (flag == "error") {

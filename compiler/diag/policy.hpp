@@ -10,7 +10,7 @@ namespace edsc {
 
 // What the user's -W flags make of the catalogue's default severities,
 // following the compiler conventions: later flags win.
-//   -W<id|group>             enable
+//   -W<id|group>             enable (rules of group `pedantic` start disabled)
 //   -Wno-<id|group>          disable (syntax and input errors cannot be disabled)
 //   -Werror                  every warning becomes an error
 //   -Werror=<id|group>       that warning becomes an error

@@ -18,7 +18,8 @@ std::string render_rules_markdown() {
       "Generated from `compiler/diag/catalogue.def` by `edsc rules --markdown`;\n"
       "do not edit by hand (a test fails when this file is stale).\n\n"
       "Each id can be used with `-W<id>`, `-Wno-<id>`, `-Werror=<id>`; each group name\n"
-      "with the same flags applies to all of its diagnostics.\n\n"
+      "with the same flags applies to all of its diagnostics. Diagnostics of the group\n"
+      "`pedantic` are off unless `-Wpedantic` or their own `-W<id>` turns them on.\n\n"
       "| id | severity | group | summary |\n|---|---|---|---|\n";
   for (const auto& r : all_rules()) {
     out += fmt::format("| [`{}`](#{}) | {} | {} | {} |\n", r.name, r.name, to_string(r.default_level), r.group,

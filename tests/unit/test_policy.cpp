@@ -46,3 +46,27 @@ TEST(policy, group_and_id_flags_are_accepted) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(policy, pedantic_rules_start_disabled_and_can_be_enabled) {
+  edsc::diag_policy p;
+  EXPECT_FALSE(p.enabled(diag_id::missing_classification_devicenet));
+  EXPECT_TRUE(p.enabled(diag_id::io_info_unreferenced));
+  EXPECT_FALSE(p.add_flag("pedantic").has_value());
+  EXPECT_TRUE(p.enabled(diag_id::missing_classification_devicenet));
+  EXPECT_FALSE(p.add_flag("no-missing-classification-devicenet").has_value());
+  EXPECT_FALSE(p.enabled(diag_id::missing_classification_devicenet));
+}
+
+TEST(policy, werror_promotes_warnings_but_not_notes_and_later_flags_win) {
+  edsc::diag_policy p;
+  EXPECT_FALSE(p.add_flag("error").has_value());
+  EXPECT_EQ(p.level_of(diag_id::io_info_cos_cyclic), severity::error);
+  EXPECT_EQ(p.level_of(diag_id::io_info_unreferenced), severity::note);
+  EXPECT_FALSE(p.add_flag("no-error=io-info-cos-cyclic").has_value());
+  EXPECT_EQ(p.level_of(diag_id::io_info_cos_cyclic), severity::warning);
+  EXPECT_EQ(p.level_of(diag_id::variant_io_mismatch), severity::error);
+}
+
+}  // namespace
