@@ -97,13 +97,19 @@ void builder::bad_header_body(span s) {
   if (!closed) {
     report(diag_id::syntax_section_header, {s.end, s.end},
            "expected ']' to close the section header", "]");
-  } else if (s.empty()) {
+    return;
+  }
+  // Name the byte that made the header malformed, not the first of the name.
+  const auto body = t_.text(s);
+  const auto bad = body.find_first_not_of(
+      " abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_./\\-");
+  if (bad == std::string_view::npos) {
     report(diag_id::syntax_section_header, s, "empty section name");
   } else {
     report(diag_id::syntax_section_header, s,
            fmt::format("invalid section name; names are letters, digits, single spaces and "
                        "'_' '.' '/' '\\' '-', found {}",
-                       describe(t_.text(s))));
+                       describe(body.substr(bad))));
   }
 }
 
@@ -275,6 +281,12 @@ void builder::close_frame() {
     auto& f = t_.fields[fr.owner];
     f.children_begin = begin;
     f.children_count = count;
+    // A dataset closed without its `}` still holds its children: its value
+    // runs to the last significant token so far, not just to its `{`.
+    std::uint32_t end = static_cast<std::uint32_t>(t_.tokens.size());
+    while (end > f.first_token + 1 && is_trivia(t_.tokens[end - 1].kind)) --end;
+    f.end_token = end;
+    f.where.end = t_.tokens[end - 1].where.end;
   }
   current_field_ = fr.owner;
   --depth_;

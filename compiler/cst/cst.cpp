@@ -32,6 +32,18 @@ void append_tokens(const tree& t, std::uint32_t first, std::uint32_t end, std::s
   out.append(t.text(s));
 }
 
+// The first dataset child (at any depth) whose tokens lie outside its parent's.
+std::uint32_t first_stray_child(const tree& t, const field& f) {
+  for (std::uint32_t i = 0; i < f.children_count; ++i) {
+    const auto& c = t.child_of(f, i);
+    if (c.kind != field_kind::empty && (c.first_token < f.first_token || c.end_token > f.end_token)) {
+      return c.first_token;
+    }
+    if (const auto bad = first_stray_child(t, c); bad != npos) return bad;
+  }
+  return npos;
+}
+
 }  // namespace
 
 std::string print(const tree& t) {
@@ -67,6 +79,7 @@ std::uint32_t first_structure_violation(const tree& t) {
       for (std::uint32_t fi = 0; fi < e.fields_count; ++fi) {
         const auto& f = t.field_of(e, fi);
         if (f.first_token < e.first_token || f.end_token > e.end_token) return offset_of(f.first_token);
+        if (const auto bad = first_stray_child(t, f); bad != npos) return offset_of(bad);
       }
     }
   }
