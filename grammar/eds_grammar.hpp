@@ -61,13 +61,12 @@ struct string_token : pg::sor<string_piece, unterminated_string> {};
 struct string_seq : pg::seq<string_token, pg::star<pg::at<skip, string_open>, skip, string_token>> {};
 
 // ---- entries --------------------------------------------------------------------
-struct keyword_text : pg::plus<pg::identifier_other> {};
-struct keyword : keyword_text {};
 struct equals : pg::one<'='> {};
 struct comma : pg::one<','> {};
 struct semicolon : pg::one<';'> {};
 // A keyword has a letter or `_` (`1_Foo`, `Param1`); `1 = 2` is a value, not an entry.
 struct entry_keyword_text : pg::seq<pg::star<pg::digit>, pg::sor<pg::alpha, pg::one<'_'>>, pg::star<pg::identifier_other>> {};
+struct keyword : entry_keyword_text {};
 struct new_entry_ahead : pg::seq<entry_keyword_text, skip, pg::one<'='>> {};
 
 struct bare_char : pg::not_one<',', ';', '"', '{', '}', '$', ' ', '\t', '\r', '\n', '=', '[', ']'> {};
@@ -120,7 +119,8 @@ struct entry_without_equals : pg::seq<missing_equals, pg::opt<skipped_text>, pg:
 struct entry : pg::seq<keyword, pg::sor<entry_body, entry_without_equals>> {};
 
 // ---- file -----------------------------------------------------------------------
-struct item_start : pg::sor<pg::one<' ', '\t', '\r', '\n', '$', '['>, pg::identifier_other> {};
+// What may start an item; anything else is stray (an all-digit word too).
+struct item_start : pg::sor<pg::one<' ', '\t', '\r', '\n', '$', '['>, entry_keyword_text> {};
 // Stray text runs to the end of its line (or a comment): one error per line,
 // since the usual cause is a comment that lost its `$`.
 struct stray : pg::seq<pg::plus<pg::not_at<item_start>, pg::any>, pg::star<pg::not_one<'\r', '\n', '$'>>> {};

@@ -301,8 +301,16 @@ void builder::rbrace(span s) {
 
 void builder::missing_rbrace() {
   if (!entry_too_deep_) {
-    report(diag_id::syntax_missing_rbrace, after_last_significant(),
-           "expected '}' to close the dataset", "}");
+    const span at = after_last_significant();
+    auto* last = diags_.empty() ? nullptr : &diags_.back();
+    if (last != nullptr && last->id == diag_id::syntax_missing_rbrace && last->where == at) {
+      // Several datasets left open at once: one diagnostic, one fix-it closing them all.
+      auto& closing = last->fixits.back().replacement;
+      closing += '}';
+      last->message = fmt::format("expected '{}' to close {} nested datasets", closing, closing.size());
+    } else {
+      report(diag_id::syntax_missing_rbrace, at, "expected '}' to close the dataset", "}");
+    }
   }
   close_frame();
 }
