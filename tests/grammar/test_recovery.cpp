@@ -104,12 +104,12 @@ TEST(Recovery, NulByteIsReportedWhereItIs) {
   EXPECT_EQ(p.fields("A"), strings{"\"a\0b\""s});
 }
 
-}  // namespace
-}  // namespace edsc::test
-
 TEST(Recovery, AnAllDigitWordIsStrayNotAKeyword) {
   // Keywords have a letter or '_' (`1_Vendor`); `5 = x;` is one stray line.
   const auto p = parse_text("[S]\n5 = x;\nA = 1;\n");
-  EXPECT_EQ(p.diag_list(), std::vector<std::string>{"syntax-stray@2:1"});
-  EXPECT_EQ(p.keywords(), std::vector<std::string>{"A"});
+  EXPECT_EQ(p.diag_list(), strings{"syntax-stray@2:1"});
+  EXPECT_EQ(p.keywords(), strings{"A"});
 }
+
+}  // namespace
+}  // namespace edsc::test
