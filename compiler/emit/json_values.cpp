@@ -130,6 +130,7 @@ json writer::path(const model::epath& p) const {
   json j;
   j["bytes"] = p.byte_count;
   j["complete"] = p.complete;
+  j["packed"] = p.packed;
   j["segments"] = std::move(segs);
   return j;
 }

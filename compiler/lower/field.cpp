@@ -152,6 +152,7 @@ void lower_bare(std::string_view s, const schema::field_desc& d, value& v) {
 
 model::origin context::origin_of(std::uint32_t entry, std::uint32_t index) const {
   const auto& e = tree.entries[entry];
+  if (index == model::none) return {entry, index, e.where};  // the entry as a whole
   if (index < e.fields_count) return {entry, index, tree.field_of(e, index).where};
   // Past the end: a zero-width span at the end of the last field (or the keyword).
   const std::uint32_t at = e.fields_count ? tree.field_of(e, e.fields_count - 1).where.end : e.keyword.end;

@@ -66,11 +66,40 @@ bool read_number(const std::vector<item>& it, std::size_t at, std::size_t bytes,
 
 }  // namespace
 
+namespace {
+
+bool clean(const model::epath& p) {
+  if (!p.complete) return false;
+  for (const auto& s : p.segments)
+    if (s.kind == segment_kind::unknown) return false;
+  return true;
+}
+
+void segments(const std::vector<item>& it, bool packed, model::epath& out, std::deque<std::string>& storage);
+
+}  // namespace
+
 bool epath(std::string_view s, model::epath& out, std::deque<std::string>& storage) {
   std::vector<item> it;
   it.reserve(s.size() / 3 + 1);
   if (!lex_epath(s, it)) return false;
+  out = model::epath{};
   out.byte_count = static_cast<std::uint32_t>(it.size());
+  segments(it, false, out, storage);
+  if (!clean(out)) {
+    model::epath alt;
+    alt.byte_count = out.byte_count;
+    alt.packed = true;
+    segments(it, true, alt, storage);
+    if (clean(alt)) out = std::move(alt);
+  }
+  return true;
+}
+
+namespace {
+
+void segments(const std::vector<item>& it, bool packed, model::epath& out, std::deque<std::string>& storage) {
+  const std::size_t pad = packed ? 0 : 1;
   std::size_t i = 0;
   while (i < it.size()) {
     epath_segment seg;
@@ -97,12 +126,12 @@ bool epath(std::string_view s, model::epath& out, std::deque<std::string>& stora
         i += 2;
       } else if (seg.kind != segment_kind::unknown && fmt == 1) {  // pad byte, then 16 bits
         seg.width = 16;
-        ok = read_number(it, i + 2, 2, seg);
-        i += 4;
+        ok = read_number(it, i + 1 + pad, 2, seg);
+        i += 3 + pad;
       } else if (seg.kind != segment_kind::unknown && fmt == 2) {
         seg.width = 32;
-        ok = read_number(it, i + 2, 4, seg);
-        i += 6;
+        ok = read_number(it, i + 1 + pad, 4, seg);
+        i += 5 + pad;
       }
       if (!ok) {
         if (seg.kind != segment_kind::unknown) out.complete = false;
@@ -157,8 +186,9 @@ bool epath(std::string_view s, model::epath& out, std::deque<std::string>& stora
       break;
     }
   }
-  return true;
 }
+
+}  // namespace
 
 std::string_view piece_body(std::string_view p, bool& wide) {
   wide = !p.empty() && p.front() == 'L';

@@ -39,6 +39,9 @@ struct epath {
   std::vector<epath_segment> segments;
   std::uint32_t byte_count = 0;
   bool complete = true;
+  // 16/32-bit logical values written without their pad byte (`25 64 00`),
+  // as Rockwell link paths do; chosen only when the padded reading fails.
+  bool packed = false;
 };
 
 }  // namespace edsc::model

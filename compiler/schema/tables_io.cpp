@@ -98,7 +98,7 @@ constexpr field_desc f_port[] = {
     {"type", vt::keyword, 0, true, 0, port_words},
     {"name", vt::string, 0, true},
     {"path", vt::epath, 0, true},
-    {"number", vt::integer, c::UINT, true},
+    {"port_number", vt::integer, c::UINT, true},
 };
 constexpr field_desc f_tspec[] = {
     {"direction", vt::keyword, 0, true, 0, tspec_words},

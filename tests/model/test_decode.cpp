@@ -157,3 +157,18 @@ TEST(Decode, StringsAndBase64) {
   EXPECT_FALSE(decode::base64("AA*A", b));
   EXPECT_FALSE(decode::base64("AAA", b));
 }
+
+TEST(Decode, PackedSixteenBitSegmentsAsRockwellWritesThem) {
+  std::deque<std::string> store;
+  epath p;
+  ASSERT_TRUE(decode::epath("20 0F 25 64 00 30 01", p, store));
+  EXPECT_TRUE(p.packed);
+  EXPECT_TRUE(p.complete);
+  ASSERT_EQ(p.segments.size(), 3u);
+  EXPECT_EQ(p.segments[1].value, 100u);
+  EXPECT_EQ(p.segments[2].kind, segment_kind::attribute);
+  epath padded;
+  ASSERT_TRUE(decode::epath("20 0F 25 00 64 00 30 01", padded, store));
+  EXPECT_FALSE(padded.packed);  // the padded reading wins when it works
+  EXPECT_EQ(padded.segments[1].value, 100u);
+}

@@ -124,3 +124,12 @@ TEST(Identity, GarbageNeverThrows) {
     EXPECT_FALSE(l->dev.incomplete) << text;
   }
 }
+
+TEST(Identity, EntityOriginsPointAtTheKeyword) {
+  auto l = test::lower_text("[Params]\n  Param7 =\n    0, , , 0, 0xC6, 1, \"n\", \"\", \"\", 0, 1, 0;\n");
+  ASSERT_EQ(l->dev.params.size(), 1u);
+  const auto& o = l->dev.params[0].from;
+  EXPECT_EQ(o.field, model::none);
+  EXPECT_EQ(l->src->position(o.where.begin).line, 2u);
+  EXPECT_EQ(l->src->text(o.where).substr(0, 6), "Param7");
+}
