@@ -17,13 +17,10 @@ struct required {
 void check_required(const check_context& ctx, std::uint32_t section, const char* section_name,
                     std::initializer_list<required> keys) {
   for (const auto& [v, keyword] : keys) {
-    if (v->present()) continue;
-    if (v->from.entry == model::none) {
-      ctx.report(diag_id::missing_keyword, ctx.section_name(section),
-                 fmt::format("[{}] has no {} entry, which is required", section_name, keyword));
-    } else {
-      ctx.report(diag_id::missing_keyword, ctx.where(*v), fmt::format("{} has no value, which is required", keyword));
-    }
+    // An entry present but empty is required-field-empty's to report.
+    if (v->present() || v->from.entry != model::none) continue;
+    ctx.report(diag_id::missing_keyword, ctx.section_name(section),
+               fmt::format("[{}] has no {} entry, which is required", section_name, keyword));
   }
 }
 
