@@ -101,6 +101,15 @@ void check_identity(const check_context& ctx) {
   check_dates(ctx);
   check_file_name(ctx);
 
+  for (std::size_t i = 0; i < d.classes.classes.size(); ++i) {
+    const auto& c = d.classes.classes[i];
+    if (c.number != i + 1) {
+      ctx.report(diag_id::class_numbering, ctx.entry_keyword(c.network.from),
+                 fmt::format("Class{} is entry {} of [Device Classification]; ClassN entries are numbered 1, 2, 3...",
+                             c.number, i + 1));
+      break;
+    }
+  }
   if (d.classes.section == model::none) {
     const bool ip_or_cnet = (ctx.networks & (model::net_ethernetip | model::net_controlnet)) != 0;
     ctx.report(ip_or_cnet ? diag_id::missing_classification : diag_id::missing_classification_devicenet,

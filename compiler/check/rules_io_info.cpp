@@ -194,6 +194,10 @@ void check_io_info(const check_context& ctx) {
     }
     check_unreferenced(ctx, io);
   }
+  if (ctx.dev.variant_io.section != model::none && !ctx.devicenet()) {
+    ctx.report(diag_id::network_section_mismatch, ctx.section_name(ctx.dev.variant_io.section),
+               "[Variant_IO_Info] describes DeviceNet connections, but the file is not classified DeviceNet");
+  }
   check_variants(ctx);
 }
 

@@ -131,6 +131,7 @@ json writer::path(const model::epath& p) const {
   j["bytes"] = p.byte_count;
   j["complete"] = p.complete;
   j["packed"] = p.packed;
+  j["symbolic"] = p.symbolic;
   j["segments"] = std::move(segs);
   return j;
 }

@@ -80,6 +80,11 @@ void segments(const std::vector<item>& it, bool packed, model::epath& out, std::
 }  // namespace
 
 bool epath(std::string_view s, model::epath& out, std::deque<std::string>& storage) {
+  if (s == "SYMBOL_ANSI") {
+    out = model::epath{};
+    out.symbolic = true;
+    return true;
+  }
   std::vector<item> it;
   it.reserve(s.size() / 3 + 1);
   if (!lex_epath(s, it)) return false;

@@ -42,6 +42,9 @@ struct epath {
   // 16/32-bit logical values written without their pad byte (`25 64 00`),
   // as Rockwell link paths do; chosen only when the padded reading fails.
   bool packed = false;
+  // `"SYMBOL_ANSI"`: no bytes yet; the configuration tool asks the user for a
+  // tag name and builds an ANSI symbol segment (Rockwell controller files).
+  bool symbolic = false;
 };
 
 }  // namespace edsc::model

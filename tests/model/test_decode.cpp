@@ -172,3 +172,14 @@ TEST(Decode, PackedSixteenBitSegmentsAsRockwellWritesThem) {
   EXPECT_FALSE(padded.packed);  // the padded reading wins when it works
   EXPECT_EQ(padded.segments[1].value, 100u);
 }
+
+TEST(Decode, SymbolAnsiIsTheSymbolicPathPlaceholder) {
+  std::deque<std::string> store;
+  epath p;
+  ASSERT_TRUE(decode::epath("SYMBOL_ANSI", p, store));
+  EXPECT_TRUE(p.symbolic);
+  EXPECT_EQ(p.byte_count, 0u);
+  EXPECT_TRUE(p.segments.empty());
+  epath other;
+  EXPECT_FALSE(decode::epath("SYMBOL_OTHER", other, store));
+}
