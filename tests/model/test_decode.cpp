@@ -136,7 +136,7 @@ TEST(Decode, EpathSegments) {
   epath bad;
   EXPECT_FALSE(decode::epath("20 4", bad, store));
   EXPECT_FALSE(decode::epath("2004", bad, store));
-  EXPECT_FALSE(decode::epath("SYMBOL_ANSI", bad, store));
+  EXPECT_FALSE(decode::epath("TAG_NAME", bad, store));  // only SYMBOL_ANSI is a placeholder
 }
 
 TEST(Decode, StringsAndBase64) {
