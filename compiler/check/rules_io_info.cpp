@@ -50,10 +50,12 @@ void check_data(const check_context& ctx, const model::io_data& d, std::string_v
                  fmt::format("{} declares {} significant bits but carries only {} bytes ({} bits)", name, bits,
                              bytes, 8 * bytes));
     } else if (bits != 0 && bytes > 1 && bits <= 8 * (bytes - 1)) {
+      const auto unused = bytes - (bits + 7) / 8;
       ctx.report(diag_id::io_info_significant_bits_low, ctx.where(d.significant_bits),
-                 fmt::format("{} declares {} significant bits for {} bytes: the last byte carries nothing; "
+                 fmt::format("{} declares {} significant bits for {} bytes: the last {} carr{} nothing; "
                              "write 0 (all bits) or {}",
-                             name, bits, bytes, 8 * bytes));
+                             name, bits, bytes, unused == 1 ? "byte" : fmt::format("{} bytes", unused),
+                             unused == 1 ? "ies" : "y", 8 * bytes));
     }
     if (bytes > 8 && section == "IO_Info") {
       ctx.report(diag_id::io_info_fragmented, ctx.where(d.size),
