@@ -15,6 +15,7 @@ using command_action = std::function<int()>;
 void register_check(CLI::App& app, command_action& run);
 void register_edit(CLI::App& app, command_action& run);
 void register_dump(CLI::App& app, command_action& run);
+void register_header(CLI::App& app, command_action& run);
 void register_rules(CLI::App& app, command_action& run);
 
 }  // namespace edsc::driver

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
     register_check(app, run);
     register_edit(app, run);
     register_dump(app, run);
+    register_header(app, run);
     register_rules(app, run);
     try {
       app.parse(argc, argv);

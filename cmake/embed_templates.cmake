@@ -1,0 +1,26 @@
+# Writes OUTPUT: a C++ file holding every TEMPLATE_DIR/*.mustache as a raw
+# string, so `edsc header` needs no files at run time (--template-dir still
+# overrides them). Run at build time by compiler/CMakeLists.txt.
+file(GLOB templates RELATIVE ${TEMPLATE_DIR} ${TEMPLATE_DIR}/*.mustache)
+list(SORT templates)
+set(body "// Generated from templates/ by cmake/embed_templates.cmake; do not edit.\n")
+string(APPEND body "#include \"emit/templates.hpp\"\n\nnamespace edsc::emit {\n\n")
+string(APPEND body "const embedded_template embedded_templates[] = {\n")
+list(LENGTH templates count)
+foreach(name IN LISTS templates)
+  file(READ ${TEMPLATE_DIR}/${name} text)
+  string(FIND "${text}" ")edsc_template\"" clash)
+  if(NOT clash EQUAL -1)
+    message(FATAL_ERROR "${name} contains the raw-string delimiter )edsc_template\"")
+  endif()
+  string(APPEND body "    {\"${name}\", R\"edsc_template(${text})edsc_template\"},\n")
+endforeach()
+string(APPEND body "};\nconst std::size_t embedded_template_count = ${count};\n\n}  // namespace edsc::emit\n")
+# Rewrite only on change so an unrelated rebuild does not recompile it.
+if(EXISTS ${OUTPUT})
+  file(READ ${OUTPUT} old)
+  if(old STREQUAL body)
+    return()
+  endif()
+endif()
+file(WRITE ${OUTPUT} "${body}")

@@ -1,0 +1,102 @@
+// `edsc header FILE -o OUT.h`: the C header firmware builds from (docs/header.md).
+#include <filesystem>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "driver/commands.hpp"
+#include "driver/output.hpp"
+#include "emit/header_view.hpp"
+#include "io/read_file.hpp"
+#include "io/write_file.hpp"
+#include "lower/lower.hpp"
+#include "parse/parser.hpp"
+
+namespace edsc::driver {
+
+namespace {
+
+struct header_cli {
+  std::string input, output, prefix = "EDS_", serial, template_dir;
+};
+
+// Decimal or 0x-hexadecimal, at most 32 bits (Identity attribute 6 is a UDINT).
+std::optional<std::uint32_t> parse_serial(const std::string& s) {
+  if (s.empty()) return std::nullopt;
+  const bool hex = s.size() > 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
+  std::uint64_t v = 0;
+  for (std::size_t i = hex ? 2 : 0; i < s.size(); ++i) {
+    const char c = s[i];
+    int d = -1;
+    if (c >= '0' && c <= '9') d = c - '0';
+    else if (hex && c >= 'a' && c <= 'f') d = c - 'a' + 10;
+    else if (hex && c >= 'A' && c <= 'F') d = c - 'A' + 10;
+    if (d < 0) return std::nullopt;
+    v = v * (hex ? 16 : 10) + static_cast<std::uint64_t>(d);
+    if (v > 0xFFFFFFFFull) return std::nullopt;
+  }
+  return static_cast<std::uint32_t>(v);
+}
+
+int run_header(const header_cli& cli) {
+  emit::header_options opt;
+  opt.prefix = cli.prefix;
+  opt.template_dir = cli.template_dir;
+  if (!cli.serial.empty()) {
+    opt.serial = parse_serial(cli.serial);
+    if (!opt.serial) {
+      print_error(fmt::format("--serial '{}' is not a number from 0 to 0xFFFFFFFF", cli.serial));
+      return exit_failure;
+    }
+  }
+  const bool to_stdout = cli.output == "-";
+  opt.output_name = to_stdout ? std::filesystem::path(cli.input).stem().string() + ".h"
+                              : std::filesystem::path(cli.output).filename().string();
+
+  auto read = io::read_source(cli.input);
+  if (auto* err = std::get_if<io::io_error>(&read)) {
+    print_error(err->message);
+    return exit_failure;
+  }
+  const auto& src = *std::get<std::unique_ptr<source_file>>(read);
+  const auto parsed = parse(src);
+  diagnostics diags;
+  const auto dev = lower(parsed.tree, diags);
+  const auto result = emit::generate_header(dev, src, opt);
+  for (const auto& issue : result.issues)
+    write_all(stderr, fmt::format("{}: {}: {}\n", cli.input, issue.error ? "error" : "warning", issue.message));
+  if (result.failure) {
+    print_error(*result.failure);
+    return exit_failure;
+  }
+  if (result.has_error()) {
+    print_error(fmt::format("no header written for {}", cli.input));
+    return exit_findings;
+  }
+  if (to_stdout) {
+    if (!write_all(stdout, result.text)) return exit_failure;
+    std::fflush(stdout);
+    return exit_ok;
+  }
+  if (auto err = io::write_atomically(cli.output, result.text)) {
+    print_error(err->message);
+    return exit_failure;
+  }
+  return exit_ok;
+}
+
+}  // namespace
+
+void register_header(CLI::App& app, command_action& run) {
+  auto cli = std::make_shared<header_cli>();
+  auto* cmd = app.add_subcommand("header", "Generate the C header firmware needs from one EDS file (docs/header.md)");
+  cmd->add_option("input", cli->input, "The EDS file")->required();
+  cmd->add_option("-o,--output", cli->output, "The header to write ('-' for standard output)")->required();
+  cmd->add_option("--prefix", cli->prefix, "Prefix of every macro (a C identifier, may be empty)")
+      ->default_str("EDS_");
+  cmd->add_option("--serial", cli->serial, "Serial number (decimal or 0x...); else the build defines it");
+  cmd->add_option("--template-dir", cli->template_dir, "Folder whose *.mustache files replace the built-in ones");
+  cmd->callback([&run, cli] { run = [cli] { return run_header(*cli); }; });
+}
+
+}  // namespace edsc::driver

@@ -1,0 +1,20 @@
+#pragma once
+// Internal to `edsc header`: the fact collectors split by family.
+#include <vector>
+
+#include "emit/c_text.hpp"
+#include "emit/header_view.hpp"
+
+namespace edsc::emit {
+
+inline constexpr std::size_t max_product_name = 32;  // Identity attribute 7
+
+[[nodiscard]] std::vector<eip_connection_facts> collect_connections(const model::device& dev,
+                                                                    std::vector<header_issue>& issues);
+[[nodiscard]] std::vector<param_facts> collect_params(const model::device& dev);
+
+// The integer a value states, following a ParamN reference to its default;
+// nullopt when neither gives a non-negative integer.
+[[nodiscard]] std::optional<std::uint64_t> number_or_param_default(const model::device& dev, const model::value& v);
+
+}  // namespace edsc::emit
