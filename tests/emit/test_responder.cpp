@@ -1,0 +1,174 @@
+// The proof that the generated header is enough: a small C DeviceNet slave
+// (responder/) built from `edsc header` output answers the master side of the
+// RightSight 42EF start-up capture byte for byte, save for what the EDS explains.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <vector>
+
+#include "emit_support.hpp"
+
+using namespace edsc::test;
+
+namespace {
+
+struct frame {
+  std::string id;    // "0x44B"
+  std::string data;  // "00 CB 00"
+  [[nodiscard]] std::string text() const { return id + " " + data; }
+};
+
+struct capture_step {
+  int step = 0;
+  frame request;
+  std::vector<frame> answers;
+};
+
+std::vector<capture_step> read_capture() {
+  std::vector<capture_step> steps;
+  std::istringstream in(read_text(fs::path(EDSC_CAPTURES_DIR) / "rightsight-42ef-startup.tsv"));
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || line.rfind("step", 0) == 0) continue;
+    std::istringstream cols(line);
+    std::string step, dir, id, data;
+    std::getline(cols, step, '\t');
+    std::getline(cols, dir, '\t');
+    std::getline(cols, id, '\t');
+    std::getline(cols, data);
+    const int n = std::stoi(step);
+    if (dir == "M") steps.push_back({n, {id, data}, {}});
+    else if (!steps.empty() && steps.back().step == n) steps.back().answers.push_back({id, data});
+  }
+  return steps;
+}
+
+// Generates the header of `eds`, builds the responder and its stdin harness.
+fs::path build_responder(const temp_dir& dir, const fs::path& eds) {
+  const auto header = dir.path() / "device_eds.h";
+  auto gen = run_shell(edsc_command() + " header " + quoted(eds) + " -o " + quoted(header) + " --serial 0x500AF52B");
+  EXPECT_EQ(gen.status, 0) << gen.output;
+  const auto src = fs::path(EDSC_TESTS_DIR) / "emit" / "responder";
+  const auto exe = dir.path() / "replay";
+  auto cc = run_shell("cc -std=c99 -Wall -Wextra -Werror -pedantic -I" + quoted(dir.path()) + " -I" + quoted(src) + " " +
+                      quoted(src / "dn_responder.c") + " " + quoted(src / "replay_main.c") + " -o " + quoted(exe));
+  EXPECT_EQ(cc.status, 0) << cc.output;
+  return exe;
+}
+
+// Feeds `requests` (one per line) and returns the slave's frames per request.
+std::vector<std::vector<std::string>> replay(const temp_dir& dir, const fs::path& exe, const std::vector<std::string>& requests) {
+  std::string input;
+  for (const auto& r : requests) input += r + "\n";
+  const auto in = dir.path() / "requests.txt";
+  write_text(in, input);
+  const auto run = run_shell(quoted(exe) + " 9 < " + quoted(in));
+  EXPECT_EQ(run.status, 0) << run.output;
+  std::vector<std::vector<std::string>> out(1);
+  std::istringstream lines(run.output);
+  std::string line;
+  while (std::getline(lines, line)) {
+    if (line == ".") out.emplace_back();
+    else out.back().push_back(line);
+  }
+  out.pop_back();
+  return out;
+}
+
+// Replays the capture; `deviations` maps a step to the answer this EDS
+// implies instead of the captured one, each with its reason.
+void replay_capture(const fs::path& eds, const std::map<int, std::pair<std::string, std::string>>& deviations) {
+  temp_dir dir("responder");
+  const auto exe = build_responder(dir, eds);
+  const auto steps = read_capture();
+  ASSERT_EQ(steps.size(), 15u);
+  std::vector<std::string> requests;
+  for (const auto& s : steps) requests.push_back(s.request.text());
+  const auto answers = replay(dir, exe, requests);
+  ASSERT_EQ(answers.size(), steps.size());
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const auto& s = steps[i];
+    ASSERT_EQ(s.answers.size(), 1u);
+    ASSERT_EQ(answers[i].size(), 1u) << "step " << s.step;
+    const auto it = deviations.find(s.step);
+    const auto expected = it == deviations.end() ? s.answers[0].text() : it->second.first;
+    EXPECT_EQ(answers[i][0], expected) << "step " << s.step << " (" << s.request.text() << ")"
+                                       << (it == deviations.end() ? "" : ": " + it->second.second);
+    if (it != deviations.end()) EXPECT_NE(expected, s.answers[0].text()) << "step " << s.step << " now matches";
+  }
+}
+
+const auto diffuse = fs::path(EDSC_PROJECT_DIR) / "eds" / "rightsight-42ef-diffuse.eds";
+
+const std::pair<std::string, std::string> revision_deviation{
+    "0x44B 00 8E 01 04", "the captured sensor reports revision 1.6; its EDS (MajRev 1, MinRev 4) says 1.4"};
+
+}  // namespace
+
+TEST(Responder, ReplaysTheRightSightStartUp) {
+  // Everything else matches, including the three Set replies that carry data:
+  // the responder keeps times in 8 ms ticks and answers with the value kept
+  // (ack timer 16 -> 16, production inhibit 1 -> 8, packet rate 250 -> 256).
+  replay_capture(diffuse, {{7, revision_deviation}});
+}
+
+TEST(Responder, ThreeByteVariantProducesThreeBytes) {
+  // Built at run time from the diffuse EDS; use eds/rightsight-42ef-3byte.eds
+  // instead once that file is checked in.
+  temp_dir dir("variant");
+  auto text = read_text(diffuse);
+  const std::string one_byte = "Input1 =\n                1,";
+  const auto at = text.find(one_byte);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, one_byte.size(), "Input1 =\n                3,");
+  const auto eds = dir.path() / "rightsight-42ef-3byte.eds";
+  write_text(eds, text);
+  replay_capture(eds, {{7, revision_deviation},
+                       {12, {"0x44B 00 8E 03 00", "the variant's Input1, and so the COS produced size, is 3 bytes"}}});
+}
+
+TEST(Responder, FragmentsTheProductNameAndAnswersErrors) {
+  temp_dir dir("fragments");
+  const auto exe = build_responder(dir, diffuse);
+  const auto answers = replay(dir, exe, {
+      "0x44E 00 4B 03 01 01 00",  // duplicate MAC check first
+      "0x44E 00 4B 03 01 01 00",  // explicit allocated
+      "0x44C 00 0E 01 01 07",     // product name: 29 body bytes, 5 fragments
+      "0x44C 80 C0 00", "0x44C 80 C1 00", "0x44C 80 C2 00", "0x44C 80 C3 00", "0x44C 80 C4 00",
+      "0x44C 00 0E 01 01 06",     // serial number from --serial
+      "0x44C 00 0E 01 01 08",     // no such attribute
+      "0x44C 00 10 01 01 01 02 00",  // identity is read-only
+      "0x44C 00 0E 64 01 01",     // no such object
+      "0x44C 00 05 01 01",        // no such service
+      "0x44C 00 4B 03 01 02 00",  // poll is not offered by the EDS
+      "0x44C 00 0E 05 04 07",     // COS not allocated yet
+      "0x44C 00 4B 03 01 10 00",  // COS
+      "0x44C 00 10 05 04 07 01 00",  // produced size is not settable
+      "0x44C 00 10 05 04 0C 03",  // deferred delete is for explicit connections only
+      "0x44C 00 4C 03 01 10",     // release COS
+      "0x44C 00 0E 05 04 08",     // gone again
+  });
+  const std::vector<std::vector<std::string>> expected{
+      {"0x44F 00 01 00 2B F5 0A 50"},
+      {"0x44B 00 CB 00"},
+      {"0x44B 80 00 8E 1B 52 69 67 68"},  // "Righ"
+      {"0x44B 80 41 74 53 69 67 68 74"},  // "tSight"
+      {"0x44B 80 42 20 53 74 61 6E 64"},  // " Stand"
+      {"0x44B 80 43 61 72 64 20 44 69"},  // "ard Di"
+      {"0x44B 80 84 66 66 75 73 65"},     // "ffuse", last
+      {},                                  // the last acknowledgement ends it
+      {"0x44B 00 8E 2B F5 0A 50"},
+      {"0x44B 00 94 14 FF"},
+      {"0x44B 00 94 0E FF"},
+      {"0x44B 00 94 16 FF"},
+      {"0x44B 00 94 08 FF"},
+      {"0x44B 00 94 02 FF"},
+      {"0x44B 00 94 16 FF"},
+      {"0x44B 00 CB 00"},
+      {"0x44B 00 94 0E FF"},
+      {"0x44B 00 94 09 FF"},
+      {"0x44B 00 CC"},
+      {"0x44B 00 94 16 FF"},
+  };
+  EXPECT_EQ(answers, expected);
+}
