@@ -35,7 +35,22 @@ void check_type(const check_context& ctx, const model::param& p) {
   }
 }
 
+// String parameters use min/max as length bounds (EDS_FORMAT.md §7 rule 17 (h)).
+void check_string_limits(const check_context& ctx, const model::param& p) {
+  const auto& def = p.default_value;
+  if (!def.ok() || def.kind != model::value_kind::string) return;
+  const auto length = def.text.size();
+  const bool too_short = p.min.is_integer() && length < p.min.as_uint();
+  const bool too_long = p.max.is_integer() && length > p.max.as_uint();
+  if (too_short || too_long) {
+    ctx.report(diag_id::param_string_length, ctx.where(def),
+               fmt::format("Param{} default is {} characters, outside its length bounds {} to {}", p.number,
+                           length, p.min.raw, p.max.raw));
+  }
+}
+
 void check_limits(const check_context& ctx, const model::param& p) {
+  if (p.type != nullptr && p.type->cls == schema::type_class::string) check_string_limits(ctx, p);
   if (p.type == nullptr || p.type->cls == schema::type_class::string || p.type->cls == schema::type_class::epath ||
       p.type->cls == schema::type_class::stringi) {
     return;

@@ -2,6 +2,9 @@
 // compares its diagnostics with the expectations written in the file.
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -23,8 +26,23 @@ std::vector<std::string> case_files() {
 
 class check_case : public ::testing::TestWithParam<std::string> {};
 
+// `$ verify-flags: pedantic error` lines give -W flags (without -W) to the run.
+edsc::check_options options_for(const std::string& path) {
+  edsc::check_options options;
+  std::ifstream in(path, std::ios::binary);
+  for (std::string line; std::getline(in, line);) {
+    const auto at = line.find("verify-flags:");
+    if (at == std::string::npos) continue;
+    std::istringstream words(line.substr(at + 13));
+    for (std::string w; words >> w;) {
+      if (auto err = options.policy.add_flag(w)) ADD_FAILURE() << path << ": " << *err;
+    }
+  }
+  return options;
+}
+
 TEST_P(check_case, diagnostics_match_expectations) {
-  const edsc::check_options options;
+  const auto options = options_for(GetParam());
   const auto result = edsc::check_file(GetParam(), options);
   ASSERT_FALSE(result.io_error) << *result.io_error;
   const auto problems = edsc::testing::verify(*result.report.source, result.report.diags);
@@ -59,6 +77,29 @@ TEST(verify_harness, reports_missing_and_unexpected_diagnostics) {
   ASSERT_EQ(problems.size(), 2u);
   EXPECT_NE(problems[0].find("unexpected error: stray [syntax-stray]"), std::string::npos);
   EXPECT_NE(problems[1].find("expected error not seen: {{never}}"), std::string::npos);
+}
+
+}  // namespace
+
+namespace {
+
+// Every diagnostic of the catalogue is triggered by at least one case file
+// (the verify tests above make sure each is also expected there), except
+// those whose trigger cannot be written as a small text file.
+TEST(check_cases, every_rule_has_a_triggering_case) {
+  const std::set<std::string_view> elsewhere{
+      "syntax-too-many-errors",  // 1000 errors: tests/grammar/test_recovery.cpp
+      "input-nul-byte",          // a NUL byte: tests/grammar/test_recovery.cpp
+  };
+  std::set<std::string_view> seen;
+  for (const auto& path : case_files()) {
+    const auto result = edsc::check_file(path, options_for(path));
+    for (const auto& d : result.report.diags) seen.insert(edsc::rule_of(d.id).name);
+  }
+  for (const auto& r : edsc::all_rules()) {
+    if (elsewhere.contains(r.name)) continue;
+    EXPECT_TRUE(seen.contains(r.name)) << r.name << " has no case file under tests/check/cases";
+  }
 }
 
 }  // namespace

@@ -5,7 +5,8 @@
 // and `expected-warning@+1{{...}}` / `@-2` address a nearby line. The text in
 // braces must occur in "message [id]". Every diagnostic must be expected and
 // every expectation met. A line `$ verify-only: syntax structure` limits the
-// comparison to diagnostics of those groups (for files that test one family).
+// comparison to diagnostics of those groups (for files that test one family);
+// `$ verify-flags: pedantic` passes -W flags (tests/check/test_cases.cpp).
 #include <string>
 #include <vector>
 

@@ -1,0 +1,159 @@
+#pragma once
+// Running the built edsc as a user does, for the CLI test files.
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+extern char** environ;
+
+namespace edsc::cli_test {
+
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+
+inline constexpr const char* kh_ko = "kh-ko__NVM__eds_sample.txt.eds";
+inline constexpr const char* fanuc = "rossmann-engineering__EEIP.NET__fanucrobot0202.eds";
+
+struct run_result {
+  int status = -1;  // exit status; 128 + signal when killed by one
+  std::string output;  // stdout and stderr, interleaved
+  std::chrono::milliseconds took{};
+  bool timed_out = false;
+};
+
+// Runs edsc with `args`, capturing stdout and stderr together. A run that takes
+// longer than `limit` is killed and reported as timed out.
+inline run_result run_edsc(const std::vector<std::string>& args, std::chrono::seconds limit = 60s) {
+  run_result r;
+  int fds[2];
+  if (::pipe2(fds, O_CLOEXEC) != 0) {
+    ADD_FAILURE() << "pipe failed";
+    return r;
+  }
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, fds[1], STDERR_FILENO);
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  std::vector<std::string> argv_s{EDSC_BINARY};
+  argv_s.insert(argv_s.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& a : argv_s) argv.push_back(a.data());
+  argv.push_back(nullptr);
+
+  const auto start = std::chrono::steady_clock::now();
+  pid_t pid = 0;
+  const int rc = posix_spawn(&pid, EDSC_BINARY, &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  ::close(fds[1]);
+  if (rc != 0) {
+    ::close(fds[0]);
+    ADD_FAILURE() << "cannot start " << EDSC_BINARY;
+    return r;
+  }
+  const auto deadline = start + limit;
+  char buf[65536];
+  for (;;) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    if (left <= 0ms) {
+      r.timed_out = true;
+      ::kill(pid, SIGKILL);
+      break;
+    }
+    pollfd pfd{fds[0], POLLIN, 0};
+    if (::poll(&pfd, 1, static_cast<int>(left.count())) <= 0) continue;
+    const ssize_t n = ::read(fds[0], buf, sizeof buf);
+    if (n <= 0) break;
+    r.output.append(buf, static_cast<std::size_t>(n));
+  }
+  ::close(fds[0]);
+  int ws = 0;
+  ::waitpid(pid, &ws, 0);
+  r.took = std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - start);
+  r.status = WIFEXITED(ws) ? WEXITSTATUS(ws) : 128 + WTERMSIG(ws);
+  return r;
+}
+
+inline std::string read_bytes(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+inline void write_bytes(const fs::path& p, const std::string& bytes) {
+  std::ofstream out(p, std::ios::binary);
+  out << bytes;
+}
+
+inline std::string corpus(const char* name) { return (fs::path(EDSC_CORPUS_DIR) / name).string(); }
+
+// A fresh scratch directory under /tmp per test, removed afterwards.
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string tmpl = (fs::temp_directory_path() / "edsc-cli-XXXXXX").string();
+    ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
+    dir_ = tmpl;
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+  fs::path file(const std::string& name, const std::string& bytes) {
+    const auto p = dir_ / name;
+    fs::create_directories(p.parent_path());
+    write_bytes(p, bytes);
+    return p;
+  }
+  std::vector<std::string> listing() const {
+    std::vector<std::string> out;
+    for (const auto& e : fs::directory_iterator(dir_)) out.push_back(e.path().filename().string());
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  fs::path dir_;
+};
+
+// A small but complete file: no syntax error and nothing a validator should flag.
+inline const std::string good_eds =
+    "$ A minimal, complete EDS for the CLI tests\n"
+    "[File]\n"
+    "        DescText = \"edsc test device\";\n"
+    "        CreateDate = 01-15-2024;\n"
+    "        CreateTime = 10:30:00;\n"
+    "        ModDate = 01-15-2024;\n"
+    "        ModTime = 10:30:00;\n"
+    "        Revision = 1.0;\n"
+    "\n"
+    "[Device]\n"
+    "        VendCode = 65535;\n"
+    "        VendName = \"edsc tests\";\n"
+    "        ProdType = 0;\n"
+    "        ProdTypeStr = \"Generic Device\";\n"
+    "        ProdCode = 1;\n"
+    "        MajRev = 1;\n"
+    "        MinRev = 1;\n"
+    "        ProdName = \"Test Device\";\n"
+    "        Catalog = \"T-1\";\n"
+    "\n"
+    "[Device Classification]\n"
+    "        Class1 = EtherNetIP;\n";
+
+}  // namespace edsc::cli_test
