@@ -44,6 +44,7 @@ mst::data identity_view(const identity_facts& id, const header_options& opt) {
   if (id.catalog) v.set("catalog", c_string_literal(*id.catalog));
   if (id.vendor_name) v.set("vendor_name", c_string_literal(*id.vendor_name));
   if (opt.serial) v.set("serial", hex(*opt.serial, 8));
+  else v.set("no_serial", true);
   v.set("vendor_id_bytes", byte_list(id.vendor_id, 2));
   v.set("device_type_bytes", byte_list(id.device_type, 2));
   v.set("product_code_bytes", byte_list(id.product_code, 2));
@@ -132,6 +133,16 @@ std::string lower(std::string s) {
   return s;
 }
 
+// Sections that render nothing leave their line breaks behind; one blank
+// line between blocks is all the header needs.
+std::string squeeze_blank_lines(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text)
+    if (c != '\n' || out.size() < 2 || out[out.size() - 1] != '\n' || out[out.size() - 2] != '\n') out.push_back(c);
+  return out;
+}
+
 }  // namespace
 
 header_result generate_header(const model::device& dev, const source_file& src, const header_options& opt) {
@@ -181,7 +192,7 @@ header_result generate_header(const model::device& dev, const source_file& src, 
     r.failure = fmt::format("header.h.mustache: {}", tmpl.error_message());
     return r;
   }
-  r.text = tmpl.render(view);
+  r.text = squeeze_blank_lines(tmpl.render(view));
   if (!tmpl.is_valid()) r.failure = fmt::format("template: {}", tmpl.error_message());
   return r;
 }
