@@ -1,59 +1,102 @@
+#include <map>
 #include <memory>
 
 #include <fmt/format.h>
 
-#include "cst/cst.hpp"
 #include "diag/render_text.hpp"
 #include "driver/commands.hpp"
+#include "driver/destination.hpp"
 #include "driver/output.hpp"
-#include "io/write_file.hpp"
-#include "parse/parser.hpp"
+#include "edit/analyze.hpp"
+#include "edit/editor.hpp"
+#include "edit/locate.hpp"
+#include "io/read_file.hpp"
 
 namespace edsc::driver {
 
 namespace {
 
+enum class op_kind { set, add_entry, remove_entry, add_section, remove_section, resize };
+
 struct edit_options {
-  std::string input;
-  std::string output;
-  bool in_place = false;
+  destination dest;
   bool force = false;
+  std::map<op_kind, std::vector<std::string>> values;
+  std::map<const CLI::Option*, op_kind> kinds;
+  std::vector<std::pair<op_kind, std::string>> ops;  // in command-line order
 };
 
-int run_edit(const edit_options& opt) {
-  if (!opt.output.empty() && !opt.in_place && io::same_file(opt.input, opt.output)) {
-    print_error(fmt::format("{}: refusing to overwrite the input; use --in-place to edit it", opt.output));
-    return exit_failure;
+void apply_op(edit::editor& ed, op_kind k, const std::string& v) {
+  switch (k) {
+    case op_kind::set: ed.set(v); break;
+    case op_kind::add_entry: ed.add_entry(v); break;
+    case op_kind::remove_entry: ed.remove_entry(v); break;
+    case op_kind::add_section: ed.add_section(v); break;
+    case op_kind::remove_section: ed.remove_section(v); break;
+    case op_kind::resize: ed.resize(v); break;
   }
-  auto read = io::read_source(opt.input);
+}
+
+// Findings of `after` that `before` did not have (compared by rule and
+// message, since positions move when text is inserted).
+diagnostics introduced(const diagnostics& before, const diagnostics& after) {
+  std::multimap<std::pair<diag_id, std::string>, int> seen;
+  for (const auto& d : before) seen.emplace(std::pair{d.id, d.message}, 0);
+  diagnostics out;
+  for (const auto& d : after) {
+    const auto it = seen.find({d.id, d.message});
+    if (it != seen.end()) seen.erase(it);
+    else out.push_back(d);
+  }
+  return out;
+}
+
+int run_edit(const edit_options& opt) {
+  if (const int rc = opt.dest.refuse_overwrite(); rc != exit_ok) return rc;
+  auto read = io::read_source(opt.dest.input);
   if (auto* err = std::get_if<io::io_error>(&read)) {
     print_error(err->message);
     return exit_failure;
   }
   const auto& src = *std::get<std::unique_ptr<source_file>>(read);
-  const auto result = parse(src);
-
-  std::string report;
+  const auto before = edit::analyze(src.path(), std::string(src.text()));
   const text_style style{use_color(color_mode::auto_detect, stderr)};
-  for (const auto& d : result.diags) render_text(src, d, style, report);
+  std::string report;
+  // A tree with syntax errors cannot be edited reliably.
+  for (const auto& d : before->syntax) render_text(*before->source, d, style, report);
   write_all(stderr, report);
-  if (count_at_least(result.diags, severity::error) > 0 && !opt.force) {
-    print_error(fmt::format("{}: not written because of the errors above; --force writes anyway",
-                            opt.in_place ? opt.input : (opt.output.empty() ? "<stdout>" : opt.output)));
+  if (before->has_syntax_errors() && !opt.force) {
+    print_error(fmt::format("{}: not written because of the syntax errors above; --force writes anyway",
+                            opt.dest.target_name()));
     return exit_findings;
   }
 
-  // Edits are applied to the lossless tree; with none, printing it gives the input back.
-  const std::string bytes = cst::print(result.tree);
-  const std::string target = opt.in_place ? opt.input : opt.output;
-  if (target.empty()) {
-    return write_all(stdout, bytes) && std::fflush(stdout) == 0 ? exit_ok : exit_failure;
-  }
-  if (auto err = io::write_atomically(target, bytes)) {
-    print_error(err->message);
+  edit::editor ed(src.path(), std::string(src.text()));
+  try {
+    for (const auto& [kind, value] : opt.ops) apply_op(ed, kind, value);
+  } catch (const edit::edit_error& e) {
+    print_error(e.what());
     return exit_failure;
   }
-  return exit_ok;
+  report.clear();
+  for (const auto& line : ed.log()) report += line + "\n";
+
+  if (!opt.ops.empty()) {
+    const auto after = edit::analyze(src.path(), ed.text());
+    const auto fresh = introduced(before->diags, after->diags);
+    for (const auto& d : fresh) render_text(*after->source, d, style, report);
+    const auto old_errors = before->errors();
+    if (old_errors > 0)
+      report += fmt::format("note: the input already had {} error{} (see edsc check); only new ones block the write\n",
+                            old_errors, old_errors == 1 ? "" : "s");
+    write_all(stderr, report);
+    if (count_at_least(fresh, severity::error) > 0 && !opt.force) {
+      print_error(fmt::format("{}: not written: the edit introduces the errors above; --force writes anyway",
+                              opt.dest.target_name()));
+      return exit_findings;
+    }
+  }
+  return opt.dest.write(ed.text());
 }
 
 }  // namespace
@@ -62,11 +105,33 @@ void register_edit(CLI::App& app, command_action& run) {
   auto opt = std::make_shared<edit_options>();
   auto* cmd = app.add_subcommand(
       "edit", "Make targeted changes to an EDS file; every byte outside the edited fields stays identical");
-  cmd->add_option("file", opt->input, "The EDS file to edit")->required();
-  auto* out = cmd->add_option("-o,--output", opt->output, "Write the result here (default: standard output)");
-  cmd->add_flag("-i,--in-place", opt->in_place, "Replace the input file (atomically)")->excludes(out);
+  opt->dest.add_options(*cmd, "The EDS file to edit");
   cmd->add_flag("--force", opt->force, "Write even when the result has errors");
-  cmd->callback([&run, opt] { run = [opt] { return run_edit(*opt); }; });
+  const std::pair<const char*, std::pair<op_kind, const char*>> ops[] = {
+      {"--set", {op_kind::set, "Section.Keyword[.field]=value: set one field (by name or 1-based number)"}},
+      {"--add-entry", {op_kind::add_entry, "Section.Keyword=fields: append an entry to a section"}},
+      {"--remove-entry", {op_kind::remove_entry, "Section.Keyword: remove an entry"}},
+      {"--add-section", {op_kind::add_section, "Name: add an empty section"}},
+      {"--remove-section", {op_kind::remove_section, "Name: remove a section and its entries"}},
+      {"--resize", {op_kind::resize,
+                    "InputN=bytes[:bits] or OutputN=...: resize DeviceNet I/O, keeping the old data set in "
+                    "[Variant_IO_Info]"}},
+  };
+  for (const auto& [name, what] : ops) {
+    auto* o = cmd->add_option(name, opt->values[what.first], what.second)->allow_extra_args(false);
+    opt->kinds[o] = what.first;
+  }
+  cmd->callback([&run, opt, cmd] {
+    // Operations run in the order they were written on the command line.
+    std::map<op_kind, std::size_t> next;
+    for (const auto* o : cmd->parse_order()) {
+      const auto it = opt->kinds.find(o);
+      if (it == opt->kinds.end()) continue;
+      const auto k = it->second;
+      opt->ops.emplace_back(k, opt->values[k][next[k]++]);
+    }
+    run = [opt] { return run_edit(*opt); };
+  });
 }
 
 }  // namespace edsc::driver

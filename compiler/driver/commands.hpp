@@ -17,5 +17,8 @@ void register_edit(CLI::App& app, command_action& run);
 void register_dump(CLI::App& app, command_action& run);
 void register_header(CLI::App& app, command_action& run);
 void register_rules(CLI::App& app, command_action& run);
+void register_fix(CLI::App& app, command_action& run);
+void register_fmt(CLI::App& app, command_action& run);
+void register_new(CLI::App& app, command_action& run);
 
 }  // namespace edsc::driver

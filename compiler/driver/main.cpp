@@ -19,6 +19,9 @@ int main(int argc, char** argv) {
     register_dump(app, run);
     register_header(app, run);
     register_rules(app, run);
+    register_fix(app, run);
+    register_fmt(app, run);
+    register_new(app, run);
     try {
       app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -1,0 +1,70 @@
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "check/check_file.hpp"
+#include "diag/render_text.hpp"
+#include "driver/commands.hpp"
+#include "driver/destination.hpp"
+#include "driver/output.hpp"
+#include "edit/fix.hpp"
+#include "io/read_file.hpp"
+
+namespace edsc::driver {
+
+namespace {
+
+struct fix_options {
+  destination dest;
+  std::vector<std::string> warning_flags;
+  bool quiet = false;
+};
+
+int run_fix(const fix_options& opt) {
+  if (const int rc = opt.dest.refuse_overwrite(); rc != exit_ok) return rc;
+  check_options options;
+  for (const auto& flag : opt.warning_flags) {
+    if (auto err = options.policy.add_flag(flag)) {
+      print_error(*err);
+      return exit_failure;
+    }
+  }
+  auto read = io::read_source(opt.dest.input);
+  if (auto* err = std::get_if<io::io_error>(&read)) {
+    print_error(err->message);
+    return exit_failure;
+  }
+  const auto& src = *std::get<std::unique_ptr<source_file>>(read);
+  auto result = edit::fix_text(src.path(), std::string(src.text()), options);
+
+  std::string report;
+  for (const auto& f : result.applied) {
+    report += fmt::format("{}: fixed: {} [{}]{}\n", f.where, f.change, f.rule,
+                          f.pass > 1 ? fmt::format(" (pass {})", f.pass) : "");
+  }
+  const text_style style{use_color(color_mode::auto_detect, stderr)};
+  if (!opt.quiet) {
+    for (const auto& d : result.remaining) render_text(*result.final_source, d, style, report);
+  }
+  report += fmt::format("{}: {} fix{} applied, {} finding{} left without a fix-it ({} error{})\n", src.path(),
+                        result.applied.size(), result.applied.size() == 1 ? "" : "es", result.remaining.size(),
+                        result.remaining.size() == 1 ? "" : "s", count_at_least(result.remaining, severity::error),
+                        count_at_least(result.remaining, severity::error) == 1 ? "" : "s");
+  if (!result.converged) report += "edsc: warning: fix-its kept appearing; stopped after several passes\n";
+  write_all(stderr, report);
+  if (const int rc = opt.dest.write(result.text); rc != exit_ok) return rc;
+  return count_at_least(result.remaining, severity::error) > 0 ? exit_findings : exit_ok;
+}
+
+}  // namespace
+
+void register_fix(CLI::App& app, command_action& run) {
+  auto opt = std::make_shared<fix_options>();
+  auto* cmd = app.add_subcommand("fix", "Apply every certain fix-it of the checker; report what is left");
+  opt->dest.add_options(*cmd, "The EDS file to repair");
+  cmd->add_option("-W", opt->warning_flags, "Diagnostic policy, as for check (e.g. -Wpedantic)")->allow_extra_args(false);
+  cmd->add_flag("-q,--quiet", opt->quiet, "List the repairs only, not the findings left");
+  cmd->callback([&run, opt] { run = [opt] { return run_fix(*opt); }; });
+}
+
+}  // namespace edsc::driver

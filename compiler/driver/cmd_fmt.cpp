@@ -1,0 +1,77 @@
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "diag/render_text.hpp"
+#include "driver/commands.hpp"
+#include "driver/destination.hpp"
+#include "driver/output.hpp"
+#include "edit/analyze.hpp"
+#include "edit/fingerprint.hpp"
+#include "edit/format.hpp"
+#include "io/read_file.hpp"
+
+namespace edsc::driver {
+
+namespace {
+
+struct fmt_options {
+  destination dest;
+  bool check = false;
+  std::string eol;  // lf | crlf | empty (keep)
+};
+
+int run_fmt(const fmt_options& opt) {
+  if (const int rc = opt.dest.refuse_overwrite(); rc != exit_ok) return rc;
+  auto read = io::read_source(opt.dest.input);
+  if (auto* err = std::get_if<io::io_error>(&read)) {
+    print_error(err->message);
+    return exit_failure;
+  }
+  const auto& src = *std::get<std::unique_ptr<source_file>>(read);
+  const std::string input(src.text());
+  const auto a = edit::analyze(src.path(), input);
+  if (a->has_syntax_errors()) {
+    std::string report;
+    for (const auto& d : a->syntax) render_text(*a->source, d, text_style{use_color(color_mode::auto_detect, stderr)}, report);
+    write_all(stderr, report);
+    print_error(fmt::format("{}: not formatted: fix the syntax errors first (edsc fix repairs the certain ones)",
+                            src.path()));
+    return exit_findings;
+  }
+  edit::format_options options;
+  options.eol = opt.eol == "crlf" ? "\r\n" : opt.eol == "lf" ? "\n" : "";
+  std::string why;
+  const auto out = edit::format(a->tree, options, why);
+  if (!out) {
+    print_error(fmt::format("{}: not formatted: {}", src.path(), why));
+    return exit_findings;
+  }
+  // Layout only: a formatted file that means something else is a bug, and
+  // is never written.
+  if (*out != input && edit::model_fingerprint(src.path(), *out) != edit::model_fingerprint(src.path(), input)) {
+    print_error(fmt::format("{}: internal error: formatting would change the file's meaning; nothing written",
+                            src.path()));
+    return exit_failure;
+  }
+  if (opt.check) {
+    if (*out == input) return exit_ok;
+    write_all(stderr, fmt::format("{}: not formatted (edsc fmt --in-place {} formats it)\n", src.path(), src.path()));
+    return exit_findings;
+  }
+  return opt.dest.write(*out);
+}
+
+}  // namespace
+
+void register_fmt(CLI::App& app, command_action& run) {
+  auto opt = std::make_shared<fmt_options>();
+  auto* cmd = app.add_subcommand("fmt", "Lay an EDS file out canonically without changing its meaning");
+  opt->dest.add_options(*cmd, "The EDS file to format");
+  cmd->add_flag("--check", opt->check, "Write nothing; exit 1 when the file is not formatted (for CI)");
+  cmd->add_option("--eol", opt->eol, "Line endings of the output: lf or crlf (default: keep the file's)")
+      ->check(CLI::IsMember({"lf", "crlf"}));
+  cmd->callback([&run, opt] { run = [opt] { return run_fmt(*opt); }; });
+}
+
+}  // namespace edsc::driver

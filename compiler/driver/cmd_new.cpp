@@ -1,0 +1,105 @@
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "diag/render_text.hpp"
+#include "driver/commands.hpp"
+#include "driver/output.hpp"
+#include "edit/analyze.hpp"
+#include "edit/locate.hpp"
+#include "edit/new_device.hpp"
+#include "io/write_file.hpp"
+
+namespace edsc::driver {
+
+namespace {
+
+struct new_options {
+  edit::device_spec spec;
+  std::string from;
+  std::string output;
+  std::string eol = "lf";
+  bool force = false;
+};
+
+int run_new(new_options opt) {
+  try {
+    if (!opt.from.empty()) {
+      std::ifstream in(opt.from, std::ios::binary);
+      if (!in) {
+        print_error(fmt::format("{}: cannot read the device description", opt.from));
+        return exit_failure;
+      }
+      std::stringstream ss;
+      ss << in.rdbuf();
+      auto spec = edit::spec_from_json(ss.str());
+      // Command-line dates win, so a build can pin one for every file.
+      if (!opt.spec.date.empty()) spec.date = opt.spec.date;
+      if (!opt.spec.time.empty()) spec.time = opt.spec.time;
+      opt.spec = std::move(spec);
+    }
+    const auto text = edit::make_eds(opt.spec, opt.eol == "crlf" ? "\r\n" : "\n");
+    // Whatever was asked for, the result must check clean before it is written.
+    const auto a = edit::analyze(opt.output.empty() ? "<new>" : opt.output, text);
+    std::string report;
+    for (const auto& d : a->diags) render_text(*a->source, d, text_style{use_color(color_mode::auto_detect, stderr)}, report);
+    write_all(stderr, report);
+    if (a->errors() > 0 && !opt.force) {
+      print_error("the new file would have the errors above; nothing written (--force writes anyway)");
+      return exit_findings;
+    }
+    if (opt.output.empty()) return write_all(stdout, text) && std::fflush(stdout) == 0 ? exit_ok : exit_failure;
+    if (auto err = io::write_atomically(opt.output, text)) {
+      print_error(err->message);
+      return exit_failure;
+    }
+    return exit_ok;
+  } catch (const edit::edit_error& e) {
+    print_error(e.what());
+    return exit_failure;
+  }
+}
+
+}  // namespace
+
+void register_new(CLI::App& app, command_action& run) {
+  auto opt = std::make_shared<new_options>();
+  auto& s = opt->spec;
+  auto* cmd = app.add_subcommand("new", "Write a complete, valid, formatted EDS for a new device");
+  auto* from = cmd->add_option("--from", opt->from, "Read the device description from a JSON file (docs/authoring.md)");
+  auto* vendor = cmd->add_option("--vendor", s.vendor, "Vendor ID (ODVA-assigned; 0-65535)");
+  auto* type = cmd->add_option("--product-type", s.product_type, "Product type (7 discrete I/O, 100 vendor specific...)");
+  auto* code = cmd->add_option("--product-code", s.product_code, "Product code (0-65535)");
+  auto* name = cmd->add_option("--name", s.name, "Product name");
+  for (auto* o : {vendor, type, code, name}) o->excludes(from);
+  cmd->add_option("--vendor-name", s.vendor_name, "Vendor name (default: \"Vendor <id>\")");
+  cmd->add_option("--product-type-name", s.product_type_name, "Product type text (default: the usual name)");
+  cmd->add_option("--catalog", s.catalog, "Catalog number");
+  cmd->add_option("--description", s.description, "[File] DescText");
+  cmd->add_option("--revision", s.revision, "Device revision major.minor (default 1.1)");
+  cmd->add_option("--network", s.network, "devicenet (default) or ethernetip")->check(CLI::IsMember({"devicenet", "ethernetip"}));
+  cmd->add_option("--input", s.input, "Input bytes (produced by the device)");
+  cmd->add_option("--output", s.output, "Output bytes (consumed by the device)");
+  cmd->add_option("--connections", s.connections, "DeviceNet connections, first is the default: poll,strobe,cos,cyclic")
+      ->delimiter(',');
+  cmd->add_option("--input-name", s.input_name, "Name of the input data");
+  cmd->add_option("--output-name", s.output_name, "Name of the output data");
+  cmd->add_option("--input-help", s.input_help, "Help text of the input data");
+  cmd->add_option("--output-help", s.output_help, "Help text of the output data");
+  cmd->add_option("--date", s.date, "Creation date mm-dd-yyyy (default: today), for reproducible builds");
+  cmd->add_option("--time", s.time, "Creation time hh:mm:ss (default: 00:00:00 with --date, else now)");
+  cmd->add_option("--eol", opt->eol, "Line endings: lf (default) or crlf")->check(CLI::IsMember({"lf", "crlf"}));
+  cmd->add_option("-o,--output-file", opt->output, "Write the file here (default: standard output)");
+  cmd->add_flag("--force", opt->force, "Write even when the result has errors");
+  cmd->callback([&run, opt, vendor, type, code, name, from] {
+    if (from->count() == 0) {
+      for (auto* o : {vendor, type, code, name})
+        if (o->count() == 0) throw CLI::RequiredError(o->get_name() + " (or --from)");
+    }
+    run = [opt] { return run_new(*opt); };
+  });
+}
+
+}  // namespace edsc::driver

@@ -1,0 +1,53 @@
+#include "edit/fingerprint.hpp"
+
+#include "edit/analyze.hpp"
+#include "emit/emit_json.hpp"
+
+namespace edsc::edit {
+
+namespace {
+
+// `"a"\n   "b"` -> `"a" "b"`: only the quoted pieces count.
+std::string pieces_only(const std::string& raw) {
+  std::string out;
+  std::size_t i = 0;
+  while (i < raw.size()) {
+    const char c = raw[i];
+    if (c == '"' || (c == 'L' && i + 1 < raw.size() && raw[i + 1] == '"')) {
+      if (!out.empty()) out.push_back(' ');
+      const auto start = i;
+      i += c == 'L' ? 2 : 1;
+      while (i < raw.size() && raw[i] != '"') i += raw[i] == '\\' ? 2 : 1;
+      out.append(raw, start, ++i - start);
+    } else if (c == '$') {
+      while (i < raw.size() && raw[i] != '\n' && raw[i] != '\r') ++i;
+    } else if (c == ' ' || c == '\t' || c == '\r' || c == '\n') {
+      ++i;
+    } else {
+      return raw;  // not a string sequence: keep as written
+    }
+  }
+  return out;
+}
+
+void normalise(nlohmann::ordered_json& j) {
+  if (j.is_object()) {
+    j.erase("line");
+    j.erase("column");
+    if (auto it = j.find("raw"); it != j.end() && it->is_string()) *it = pieces_only(it->get<std::string>());
+    for (auto& [k, v] : j.items()) normalise(v);
+  } else if (j.is_array()) {
+    for (auto& v : j) normalise(v);
+  }
+}
+
+}  // namespace
+
+std::string model_fingerprint(const std::string& path, const std::string& text) {
+  const auto a = analyze(path, text);
+  auto j = emit::to_json(a->dev, *a->source);
+  normalise(j);
+  return j.dump();
+}
+
+}  // namespace edsc::edit
