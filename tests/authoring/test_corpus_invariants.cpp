@@ -89,7 +89,9 @@ TEST(CorpusInvariants, FixIsIdempotent) {
     // Nothing left that carries a fix-it.
     for (const auto& d : edit::analyze(p.string(), once.text)->diags) EXPECT_TRUE(d.fixits.empty()) << d.message;
     repaired += once.applied.empty() ? 0 : 1;
-    if (once.applied.empty()) EXPECT_TRUE(once.text == bytes);
+    if (once.applied.empty()) {
+      EXPECT_TRUE(once.text == bytes);
+    }
   }
   EXPECT_GE(repaired, 1u);  // kh-ko's missing semicolons at least
 }

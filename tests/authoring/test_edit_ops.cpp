@@ -119,8 +119,12 @@ TEST(EditOps, CrlfFileKeepsCrlfEverywhereIncludingInsertedLines) {
   ed.add_entry("Device Classification.Class1=DeviceNet");
   const auto& out = ed.text();
   for (std::size_t i = 0; i < out.size(); ++i) {
-    if (out[i] == '\n') ASSERT_TRUE(i > 0 && out[i - 1] == '\r') << "bare LF at " << i;
-    if (out[i] == '\r') ASSERT_TRUE(i + 1 < out.size() && out[i + 1] == '\n') << "bare CR at " << i;
+    if (out[i] == '\n') {
+      ASSERT_TRUE(i > 0 && out[i - 1] == '\r') << "bare LF at " << i;
+    }
+    if (out[i] == '\r') {
+      ASSERT_TRUE(i + 1 < out.size() && out[i + 1] == '\n') << "bare CR at " << i;
+    }
   }
   EXPECT_EQ(edsc::edit::analyze("crlf.eds", out)->errors(), 0u);
 }
