@@ -112,19 +112,26 @@ TEST(Responder, ReplaysTheRightSightStartUp) {
   replay_capture(diffuse, {{7, revision_deviation}});
 }
 
+const std::pair<std::string, std::string> three_byte_deviation{
+    "0x44B 00 8E 03 00", "the variant's Input1, and so the COS produced size, is 3 bytes"};
+
 TEST(Responder, ThreeByteVariantProducesThreeBytes) {
-  // Built at run time from the diffuse EDS; use eds/rightsight-42ef-3byte.eds
-  // instead once that file is checked in.
+  replay_capture(fs::path(EDSC_PROJECT_DIR) / "eds" / "rightsight-42ef-3byte.eds",
+                 {{7, revision_deviation}, {12, three_byte_deviation}});
+}
+
+TEST(Responder, ProducedSizeFollowsInput1) {
+  // The diffuse EDS with only Input1's size changed, made at run time: the
+  // answer depends on that one field and nothing else of the variant file.
   temp_dir dir("variant");
   auto text = read_text(diffuse);
   const std::string one_byte = "Input1 =\n                1,";
   const auto at = text.find(one_byte);
   ASSERT_NE(at, std::string::npos);
   text.replace(at, one_byte.size(), "Input1 =\n                3,");
-  const auto eds = dir.path() / "rightsight-42ef-3byte.eds";
+  const auto eds = dir.path() / "resized.eds";
   write_text(eds, text);
-  replay_capture(eds, {{7, revision_deviation},
-                       {12, {"0x44B 00 8E 03 00", "the variant's Input1, and so the COS produced size, is 3 bytes"}}});
+  replay_capture(eds, {{7, revision_deviation}, {12, three_byte_deviation}});
 }
 
 TEST(Responder, FragmentsTheProductNameAndAnswersErrors) {
