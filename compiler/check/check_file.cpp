@@ -1,14 +1,31 @@
 #include "check/check_file.hpp"
 
-#include "check/context.hpp"
-
 #include <algorithm>
 
+#include "check/context.hpp"
 #include "io/read_file.hpp"
 #include "lower/lower.hpp"
 #include "parse/parser.hpp"
 
 namespace edsc {
+
+std::unique_ptr<analysis> analyze(std::unique_ptr<source_file> source, const check_options& options) {
+  auto a = std::make_unique<analysis>();
+  a->source = std::move(source);
+  auto parsed = parse(*a->source);
+  a->tree = std::move(parsed.tree);
+  a->syntax = parsed.diags;
+  a->diags = std::move(parsed.diags);
+  a->dev = lower(a->tree, a->diags);
+  a->dev.tree = &a->tree;
+  const std::uint8_t networks = options.networks != 0 ? options.networks : a->dev.classes.networks;
+  run_checks(check_context{a->tree, a->dev, networks, a->diags});
+  std::stable_sort(a->diags.begin(), a->diags.end(),
+                   [](const diagnostic& x, const diagnostic& y) { return x.where.begin < y.where.begin; });
+  options.policy.apply(a->diags);
+  options.policy.apply(a->syntax);
+  return a;
+}
 
 checked_file check_file(const std::string& path, const check_options& options) {
   checked_file out;
@@ -17,15 +34,10 @@ checked_file check_file(const std::string& path, const check_options& options) {
     out.io_error = err->message;
     return out;
   }
-  out.report.source = std::move(std::get<std::unique_ptr<source_file>>(read));
-  auto parsed = parse(*out.report.source);
-  out.report.diags = std::move(parsed.diags);
-  const auto dev = lower(parsed.tree, out.report.diags);
-  const std::uint8_t networks = options.networks != 0 ? options.networks : dev.classes.networks;
-  run_checks(check_context{parsed.tree, dev, networks, out.report.diags});
-  std::stable_sort(out.report.diags.begin(), out.report.diags.end(),
-                   [](const diagnostic& a, const diagnostic& b) { return a.where.begin < b.where.begin; });
-  options.policy.apply(out.report.diags);
+  auto a = analyze(std::move(std::get<std::unique_ptr<source_file>>(read)), options);
+  // The source is heap-held, so it outlives the tree and model that point into it.
+  out.report.source = std::move(a->source);
+  out.report.diags = std::move(a->diags);
   return out;
 }
 

@@ -1,10 +1,13 @@
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "diag/policy.hpp"
+#include "cst/cst.hpp"
 #include "diag/report.hpp"
+#include "model/device.hpp"
 
 namespace edsc {
 
@@ -12,6 +15,29 @@ struct check_options {
   diag_policy policy;
   std::uint8_t networks = 0;  // model::network bits from --network; 0: detect
 };
+
+// The whole front end on one source: the tree, the model and every
+// diagnostic after the user's policy. `edsc check` and the authoring commands
+// (which judge an edit's result before writing it) share it, so a file is
+// judged the same way everywhere. Not movable: tree and model point into
+// `source`.
+struct analysis {
+  std::unique_ptr<source_file> source;
+  cst::tree tree;
+  model::device dev;
+  diagnostics syntax;  // the parser's own findings (a subset of `diags`)
+  diagnostics diags;   // sorted by position
+
+  analysis() = default;
+  analysis(const analysis&) = delete;
+  analysis& operator=(const analysis&) = delete;
+
+  [[nodiscard]] std::string_view text() const { return source->text(); }
+  [[nodiscard]] bool has_syntax_errors() const { return count_at_least(syntax, severity::error) > 0; }
+  [[nodiscard]] std::size_t errors() const { return count_at_least(diags, severity::error); }
+};
+
+[[nodiscard]] std::unique_ptr<analysis> analyze(std::unique_ptr<source_file> source, const check_options& options);
 
 struct checked_file {
   file_report report;
