@@ -18,12 +18,9 @@ struct dump_options {
 };
 
 int run_dump(const dump_options& opt) {
-  auto read = io::read_source(opt.input);
-  if (auto* err = std::get_if<io::io_error>(&read)) {
-    print_error(err->message);
-    return exit_failure;
-  }
-  const auto& src = *std::get<std::unique_ptr<source_file>>(read);
+  const auto input_file = read_or_report(opt.input);
+  if (!input_file) return exit_failure;
+  const auto& src = *input_file;
   const auto parsed = parse(src);
   diagnostics diags;
   const auto dev = lower(parsed.tree, diags);

@@ -53,12 +53,9 @@ diagnostics introduced(const diagnostics& before, const diagnostics& after) {
 
 int run_edit(const edit_options& opt) {
   if (const int rc = opt.dest.refuse_overwrite(); rc != exit_ok) return rc;
-  auto read = io::read_source(opt.dest.input);
-  if (auto* err = std::get_if<io::io_error>(&read)) {
-    print_error(err->message);
-    return exit_failure;
-  }
-  const auto& src = *std::get<std::unique_ptr<source_file>>(read);
+  const auto input_file = read_or_report(opt.dest.input);
+  if (!input_file) return exit_failure;
+  const auto& src = *input_file;
   const auto before = edit::analyze(src.path(), std::string(src.text()));
   const text_style style{use_color(color_mode::auto_detect, stderr)};
   std::string report;

@@ -29,12 +29,9 @@ int run_fix(const fix_options& opt) {
       return exit_failure;
     }
   }
-  auto read = io::read_source(opt.dest.input);
-  if (auto* err = std::get_if<io::io_error>(&read)) {
-    print_error(err->message);
-    return exit_failure;
-  }
-  const auto& src = *std::get<std::unique_ptr<source_file>>(read);
+  const auto input_file = read_or_report(opt.dest.input);
+  if (!input_file) return exit_failure;
+  const auto& src = *input_file;
   auto result = edit::fix_text(src.path(), std::string(src.text()), options);
 
   std::string report;

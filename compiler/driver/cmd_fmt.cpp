@@ -23,12 +23,9 @@ struct fmt_options {
 
 int run_fmt(const fmt_options& opt) {
   if (const int rc = opt.dest.refuse_overwrite(); rc != exit_ok) return rc;
-  auto read = io::read_source(opt.dest.input);
-  if (auto* err = std::get_if<io::io_error>(&read)) {
-    print_error(err->message);
-    return exit_failure;
-  }
-  const auto& src = *std::get<std::unique_ptr<source_file>>(read);
+  const auto input_file = read_or_report(opt.dest.input);
+  if (!input_file) return exit_failure;
+  const auto& src = *input_file;
   const std::string input(src.text());
   const auto a = edit::analyze(src.path(), input);
   if (a->has_syntax_errors()) {

@@ -53,12 +53,9 @@ int run_header(const header_cli& cli) {
   opt.output_name = to_stdout ? std::filesystem::path(cli.input).stem().string() + ".h"
                               : std::filesystem::path(cli.output).filename().string();
 
-  auto read = io::read_source(cli.input);
-  if (auto* err = std::get_if<io::io_error>(&read)) {
-    print_error(err->message);
-    return exit_failure;
-  }
-  const auto& src = *std::get<std::unique_ptr<source_file>>(read);
+  const auto input_file = read_or_report(cli.input);
+  if (!input_file) return exit_failure;
+  const auto& src = *input_file;
   const auto parsed = parse(src);
   diagnostics diags;
   const auto dev = lower(parsed.tree, diags);

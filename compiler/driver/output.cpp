@@ -4,6 +4,8 @@
 
 #include <unistd.h>
 
+#include "io/read_file.hpp"
+
 namespace edsc::driver {
 
 bool use_color(color_mode mode, std::FILE* stream) {
@@ -23,6 +25,15 @@ void print_error(std::string_view message) {
   line += message;
   line += '\n';
   write_all(stderr, line);
+}
+
+std::unique_ptr<source_file> read_or_report(const std::string& path) {
+  auto read = io::read_source(path);
+  if (auto* err = std::get_if<io::io_error>(&read)) {
+    print_error(err->message);
+    return nullptr;
+  }
+  return std::move(std::get<std::unique_ptr<source_file>>(read));
 }
 
 }  // namespace edsc::driver

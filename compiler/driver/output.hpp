@@ -1,7 +1,10 @@
 #pragma once
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <string_view>
+
+#include "source/source_file.hpp"
 
 namespace edsc::driver {
 
@@ -13,5 +16,8 @@ enum class color_mode { auto_detect, always, never };
 bool write_all(std::FILE* stream, std::string_view s);
 
 void print_error(std::string_view message);  // "edsc: error: ..." on stderr
+
+// Reads an input file; on failure prints why and returns null.
+[[nodiscard]] std::unique_ptr<source_file> read_or_report(const std::string& path);
 
 }  // namespace edsc::driver
