@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
     register_fix(app, run);
     register_fmt(app, run);
     register_new(app, run);
+    register_verify(app, run);
     try {
       app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
