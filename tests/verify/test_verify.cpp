@@ -1,0 +1,178 @@
+// `edsc verify`: the RightSight capture, synthetic captures from the C
+// responder built on an altered EDS, and logs that are not logs.
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "check/check_file.hpp"
+#include "synth_log.hpp"
+#include "verify/compare.hpp"
+
+using namespace edsc::test;
+
+namespace {
+
+const auto diffuse = fs::path(EDSC_PROJECT_DIR) / "eds" / "rightsight-42ef-diffuse.eds";
+const auto startup = fs::path(EDSC_CAPTURES_DIR) / "rightsight-42ef-startup.tsv";
+
+command_result verify(const fs::path& eds, const fs::path& log, const std::string& extra = "") {
+  return run_shell(edsc_command() + " verify " + quoted(eds) + " --capture " + quoted(log) + " --color never " + extra);
+}
+
+// The library on a capture text, for exact diagnostic lists.
+edsc::diagnostics verify_text(const fs::path& eds, const std::string& capture) {
+  auto a = edsc::analyze(std::make_unique<edsc::source_file>(eds.string(), read_text(eds)), {});
+  const edsc::source_file cap("capture.log", capture);
+  const auto log = edsc::verify::read_can_log(cap.text());
+  const auto conv = edsc::verify::decode(log);
+  auto r = edsc::verify::compare(cap, log, conv, a->dev, *a->source, std::nullopt);
+  EXPECT_TRUE(r.eds_errors.empty());
+  return r.diags;
+}
+
+std::vector<std::string> ids(const edsc::diagnostics& ds) {
+  std::vector<std::string> out;
+  for (const auto& d : ds) out.emplace_back(edsc::rule_of(d.id).name);
+  return out;
+}
+
+TEST(Verify, RightSightCaptureShowsOnlyTheMinorRevision) {
+  // Major 1 = 1, minor 6 != 4: the scanner still matches the node, so the
+  // one disagreement is a note and verify succeeds.
+  const auto ds = verify_text(diffuse, read_text(startup));
+  ASSERT_EQ(ids(ds), std::vector<std::string>{"verify-minor-revision"});
+  EXPECT_EQ(ds[0].level, edsc::severity::note);
+  EXPECT_NE(ds[0].message.find("revision 1.6 where the EDS says 1.4"), std::string::npos) << ds[0].message;
+  const auto run = verify(diffuse, startup);
+  EXPECT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("rightsight-42ef-startup.tsv:21:1: note:"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("rightsight-42ef-diffuse.eds:26:"), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find(" error:"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("0 errors, 0 warnings, 1 note"), std::string::npos) << run.output;
+}
+
+TEST(Verify, JsonAndSarifCarryTheSameFinding) {
+  const auto json = verify(diffuse, startup, "--format json");
+  ASSERT_EQ(json.status, 0) << json.output;
+  const auto j = nlohmann::json::parse(json.output);
+  EXPECT_NE(j.dump().find("verify-minor-revision"), std::string::npos);
+  const auto sarif = verify(diffuse, startup, "--format sarif");
+  ASSERT_EQ(sarif.status, 0) << sarif.output;
+  const auto s = nlohmann::json::parse(sarif.output);
+  EXPECT_EQ(s["version"], "2.1.0");
+  EXPECT_NE(s.dump().find("verify-minor-revision"), std::string::npos);
+}
+
+TEST(Verify, OtherMacHasNoNode) {
+  const auto run = verify(diffuse, startup, "--mac 10");
+  EXPECT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("[verify-no-node]"), std::string::npos) << run.output;
+}
+
+TEST(Verify, ResponderWithWrongCodeAndSizeIsAMismatch) {
+  // Firmware built from an EDS with another product code and a 2-byte Input1,
+  // checked against the original EDS; its COS data then carries 2 bytes.
+  temp_dir dir("verify-synth");
+  auto text = altered(read_text(diffuse), "ProdCode = 44;", "ProdCode = 45;");
+  text = altered(text, "Input1 =\n                1,", "Input1 =\n                2,");
+  const auto wrong = dir.path() / "wrong.eds";
+  write_text(wrong, text);
+  auto log = responder_log(dir, wrong, rightsight_requests());
+  log += candump_line(1700000000.0, "0x349 01 00");
+  log += candump_line(1700000000.1, "0x349 01 00");
+  const auto capture = dir.path() / "wrong.log";
+  write_text(capture, log);
+
+  const auto ds = verify_text(diffuse, log);
+  EXPECT_EQ(ids(ds), (std::vector<std::string>{"verify-identity-mismatch", "verify-connection-size", "verify-io-length"}))
+      << log;
+  const auto run = verify(diffuse, capture);
+  EXPECT_EQ(run.status, 1) << run.output;
+  EXPECT_NE(run.output.find("product code 45 where the EDS says 44"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("produces 2 bytes on its COS connection where the EDS says 1 (Input1 Size at"),
+            std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("(and 1 more frames like it)"), std::string::npos) << run.output;
+}
+
+TEST(Verify, ResponderWithWrongVendorRevisionAndName) {
+  temp_dir dir("verify-identity");
+  auto text = altered(read_text(diffuse), "VendCode = 0001;", "VendCode = 0002;");
+  text = altered(text, "MajRev = 1;", "MajRev = 2;");
+  text = altered(text, "\"RightSight Standard Diffuse\"", "\"RightSight\"");
+  const auto wrong = dir.path() / "wrong.eds";
+  write_text(wrong, text);
+  auto requests = rightsight_requests();
+  for (const auto* r : {"0x44C 00 0E 01 01 07", "0x44C 80 C0 00", "0x44C 80 C1 00"}) requests.push_back(r);
+  const auto ds = verify_text(diffuse, responder_log(dir, wrong, requests));
+  EXPECT_EQ(ids(ds), (std::vector<std::string>{"verify-identity-mismatch", "verify-identity-mismatch",
+                                               "verify-product-name"}));
+  ASSERT_EQ(ds.size(), 3u);
+  EXPECT_NE(ds[0].message.find("vendor ID 2 where the EDS says 1"), std::string::npos) << ds[0].message;
+  EXPECT_NE(ds[1].message.find("revision 2.4 where the EDS says 1.4"), std::string::npos) << ds[1].message;
+}
+
+TEST(Verify, ConnectionsTheEdsDoesNotAllowAndTheReverse) {
+  const std::string log =
+      "(1.0) can0 44C#000E050207\n"   // polled produced size
+      "(1.1) can0 44B#008E0100\n"     // answered: the EDS has no poll
+      "(1.2) can0 44C#000E050407\n"   // COS produced size
+      "(1.3) can0 44B#0094 16FF\n";   // object does not exist: the EDS has COS
+  EXPECT_EQ(ids(verify_text(diffuse, "(1.0) can0 44C#000E050207\n(1.1) can0 44B#008E0100\n"
+                                     "(1.2) can0 44C#000E050407\n(1.3) can0 44B#009416FF\n")),
+            (std::vector<std::string>{"verify-connection-not-in-eds", "verify-connection-missing"}));
+  EXPECT_EQ(ids(verify_text(diffuse, log)).front(), "verify-connection-not-in-eds");
+}
+
+TEST(Verify, MalformedLinesAreReportedWithTheirLineNumber) {
+  const std::string log =
+      "(1.0) can0 44C#000E010101\n"
+      "(1.1) can0 44B#008E0100\n"
+      "(1.2) can0 44B#8E0\n"          // odd digit count
+      "garbage\n"
+      "(x) can0 44B#00\n"
+      "(1.3) can0 44B#0102030405060708090A\n"
+      "(1.4) can0 1ABCDEF0#00\n"      // 29-bit: decodable as a line, not DeviceNet
+      "(1.5) can0 7F3#01\n";
+  const auto ds = verify_text(diffuse, log);
+  std::vector<std::string> expected{"verify-log-line", "verify-log-line", "verify-log-line", "verify-log-line",
+                                    "verify-undecodable", "verify-undecodable"};
+  EXPECT_EQ(ids(ds), expected);
+  temp_dir dir("verify-bad");
+  write_text(dir.path() / "bad.log", log);
+  const auto run = verify(diffuse, dir.path() / "bad.log");
+  EXPECT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("bad.log:3:1: warning: capture line 3 skipped"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("bad.log:4:1: warning: capture line 4 skipped"), std::string::npos) << run.output;
+}
+
+TEST(Verify, NoFrameAtAllIsUnreadableInput) {
+  temp_dir dir("verify-none");
+  write_text(dir.path() / "junk.log", "this is not\na CAN log\n");
+  const auto run = verify(diffuse, dir.path() / "junk.log");
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_NE(run.output.find("line 1"), std::string::npos) << run.output;
+  EXPECT_EQ(verify(diffuse, dir.path() / "missing.log").status, 2);
+}
+
+TEST(Verify, EveryPrefixOfEveryLineIsHandled) {
+  // No input may crash the reader or the decoder: cut every line of a
+  // capture at every byte.
+  const auto text = read_text(startup);
+  for (std::size_t cut = 0; cut < text.size(); ++cut) {
+    const auto log = edsc::verify::read_can_log(std::string_view(text).substr(0, cut));
+    (void)edsc::verify::decode(log);
+  }
+  SUCCEED();
+}
+
+TEST(Verify, DecodePrintsTheConversation) {
+  const auto run = run_shell(edsc_command() + " verify --decode " + quoted(startup));
+  EXPECT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("G2 msg 7: duplicate MAC ID check    MAC 9 is on line: vendor 1, serial 0x500AF52B"),
+            std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("error: object does not exist (0x16)"), std::string::npos) << run.output;
+}
+
+}  // namespace
