@@ -1,0 +1,80 @@
+#pragma once
+// The bodies of the libFuzzer targets, shared with the regression replay in
+// tests/reliability so a crash found by fuzzing is re-run by the normal (g++)
+// build forever after. Each body returns an empty string when the input
+// passed, else a description of the broken invariant; a crash, leak or
+// sanitizer report is the other way to fail.
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "check/check_file.hpp"
+#include "cst/cst.hpp"
+#include "edit/analyze.hpp"
+#include "edit/editor.hpp"
+#include "edit/fingerprint.hpp"
+#include "edit/format.hpp"
+#include "emit/emit_json.hpp"
+#include "emit/header_view.hpp"
+#include "lower/lower.hpp"
+#include "parse/parser.hpp"
+#include "source/source_file.hpp"
+
+namespace edsc::fuzz {
+
+inline constexpr const char* fuzz_path = "fuzz.eds";
+
+// Parsing never throws, and the tree is lossless: printing it gives back
+// every input byte.
+inline std::string parse_body(std::string_view input) {
+  const source_file src(fuzz_path, std::string(input));
+  const auto parsed = parse(src);
+  if (cst::print(parsed.tree) != input) return "cst::print does not reproduce the input";
+  return {};
+}
+
+// The whole front end (parse, lower, every rule, the severity policy) plus
+// the JSON dump, which sees every string of the model.
+inline std::string check_body(std::string_view input) {
+  const auto a = edit::analyze(fuzz_path, std::string(input));
+  const auto j = emit::to_json(a->dev, *a->source);
+  (void)j.dump();
+  return {};
+}
+
+// `edsc fmt` changes layout only: when it formats, the model is unchanged.
+inline std::string fmt_body(std::string_view input) {
+  const std::string text(input);
+  const auto a = edit::analyze(fuzz_path, text);
+  if (a->has_syntax_errors()) return {};  // fmt refuses these files
+  std::string why;
+  const auto out = edit::format(a->tree, {}, why);
+  if (!out) return {};
+  if (*out == text) return {};
+  if (edit::model_fingerprint(fuzz_path, *out) != edit::model_fingerprint(fuzz_path, text))
+    return "formatting changed the model";
+  return {};
+}
+
+// An editor given no operation hands back the bytes it was given.
+inline std::string edit_body(std::string_view input) {
+  const std::string text(input);
+  const edit::editor ed(fuzz_path, text);
+  if (ed.text() != text) return "edit with no operations changed the bytes";
+  return {};
+}
+
+// Header generation renders with the built-in templates whatever the model
+// holds: a template failure is a bug; EDS problems only withhold the header.
+inline std::string header_body(std::string_view input) {
+  const source_file src(fuzz_path, std::string(input));
+  const auto parsed = parse(src);
+  diagnostics diags;
+  const auto dev = lower(parsed.tree, diags);
+  const auto result = emit::generate_header(dev, src, emit::header_options{});
+  if (result.failure) return "header template failed: " + *result.failure;
+  if (!result.has_error() && result.text.empty()) return "header rendered empty";
+  return {};
+}
+
+}  // namespace edsc::fuzz
