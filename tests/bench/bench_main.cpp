@@ -111,9 +111,11 @@ void register_all(const std::vector<input_set>& sets) {
                                                            benchmark::Counter::kIsIterationInvariantRate);
           });
       b->Unit(benchmark::kMillisecond);
-      // With --benchmark_repetitions=N, also the best run: the one least
-      // disturbed by other processes on a shared machine.
+      // With --benchmark_repetitions=N, also the best run (the one least
+      // disturbed by other processes on a shared machine): read the time
+      // from the _min row and the rates from the _max row.
       b->ComputeStatistics("min", [](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); });
+      b->ComputeStatistics("max", [](const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); });
     }
   }
 }
