@@ -22,6 +22,9 @@
 // - Less: datasets `{...}` nest at most `max_nesting` deep (STRINGI needs 2).
 // - Less: a string cannot span lines (the format forbids it; use adjacent pieces).
 
+#include <bit>
+#include <cstdint>
+#include <cstring>
 #include <type_traits>
 
 #include <tao/pegtl.hpp>
@@ -32,12 +35,154 @@ namespace pg = tao::pegtl;
 
 inline constexpr unsigned max_nesting = 16;
 
+// ---- hand-written scanners ------------------------------------------------------
+// The runs every line is made of (blanks, comment text, string bodies, bare
+// words) are matched by one tight loop each instead of a PEGTL rule per byte:
+// parsing spends most of its time there, and the lookaheads scan trivia twice.
+// Each accepts exactly the language given in its comment. None crosses a line
+// end, so they bump the input within the line.
+template <bool (*Stop)(const char* p, const char* end), bool NonEmpty>
+struct scan_run {
+  using rule_t = scan_run;
+  using subs_t = pg::empty_list;
+  template <typename ParseInput>
+  [[nodiscard]] static bool match(ParseInput& in) noexcept {
+    const char* const begin = in.current();
+    const char* const end = in.end();
+    const char* p = begin;
+    while (p != end && !Stop(p, end)) ++p;
+    if (NonEmpty && p == begin) return false;
+    in.bump_in_this_line(static_cast<std::size_t>(p - begin));
+    return true;
+  }
+};
+
+constexpr bool is_line_end(char c) { return c == '\r' || c == '\n'; }
+constexpr bool stop_blank(const char* p, const char*) { return *p != ' ' && *p != '\t'; }
+
+// Blank runs are long (indentation, padding before aligned comments): spaces
+// are skipped eight at a time, tabs and the tail byte by byte.
+struct blank_run {
+  using rule_t = blank_run;
+  using subs_t = pg::empty_list;
+  template <typename ParseInput>
+  [[nodiscard]] static bool match(ParseInput& in) noexcept {
+    const char* const begin = in.current();
+    const char* const end = in.end();
+    const char* p = begin;
+    for (;;) {
+      while (std::endian::native == std::endian::little && end - p >= 8) {
+        std::uint64_t word;
+        std::memcpy(&word, p, 8);
+        const std::uint64_t diff = word ^ 0x2020202020202020ull;  // zero bytes are spaces
+        if (diff != 0) {
+          p += std::countr_zero(diff) / 8;  // little-endian: first non-space byte
+          break;
+        }
+        p += 8;
+      }
+      if (p == end || (*p != ' ' && *p != '\t')) break;
+      ++p;
+    }
+    if (p == begin) return false;
+    in.bump_in_this_line(static_cast<std::size_t>(p - begin));
+    return true;
+  }
+};
+
+// Comment text runs to the line end: two vectorised searches.
+struct comment_text {
+  using rule_t = comment_text;
+  using subs_t = pg::empty_list;
+  template <typename ParseInput>
+  [[nodiscard]] static bool match(ParseInput& in) noexcept {
+    const char* const begin = in.current();
+    const auto size = static_cast<std::size_t>(in.end() - begin);
+    const void* lf = std::memchr(begin, '\n', size);
+    const auto upto = lf ? static_cast<std::size_t>(static_cast<const char*>(lf) - begin) : size;
+    const void* cr = std::memchr(begin, '\r', upto);
+    const auto n = cr ? static_cast<std::size_t>(static_cast<const char*>(cr) - begin) : upto;
+    in.bump_in_this_line(n);
+    return true;
+  }
+};
+constexpr bool stop_bare(const char* p, const char*) {
+  switch (*p) {
+    case ',': case ';': case '"': case '{': case '}': case '$': case ' ': case '\t':
+    case '\r': case '\n': case '=': case '[': case ']': return true;
+    default: return false;
+  }
+}
+// Inside a string: an escape (`\` then any byte but a line end) is two bytes;
+// a `\` before a line end or the end of input stops the run, as do `"` and
+// the line end itself.
+struct string_chars {
+  using rule_t = string_chars;
+  using subs_t = pg::empty_list;
+  template <typename ParseInput>
+  [[nodiscard]] static bool match(ParseInput& in) noexcept {
+    const char* const begin = in.current();
+    const char* const end = in.end();
+    const char* p = begin;
+    while (p != end) {
+      const char c = *p;
+      if (c == '"' || is_line_end(c)) break;
+      if (c == '\\') {
+        if (p + 1 == end || is_line_end(p[1])) break;
+        ++p;
+      }
+      ++p;
+    }
+    in.bump_in_this_line(static_cast<std::size_t>(p - begin));
+    return true;
+  }
+};
+
 // ---- trivia -------------------------------------------------------------------
-struct blank : pg::plus<pg::one<' ', '\t'>> {};
+// plus<one<' ', '\t'>>
+struct blank : blank_run {};
 struct newline : pg::sor<pg::seq<pg::one<'\r'>, pg::opt<pg::one<'\n'>>>, pg::one<'\n'>> {};
-struct comment : pg::seq<pg::one<'$'>, pg::star<pg::not_one<'\r', '\n'>>> {};
+// seq<one<'$'>, star<not_one<'\r', '\n'>>>
+struct comment : pg::seq<pg::one<'$'>, comment_text> {};
 struct trivia : pg::sor<blank, newline, comment> {};
-struct skip : pg::star<trivia> {};
+
+// The bytes star<trivia> matches from p: blanks, line ends and comments.
+inline std::size_t trivia_length(const char* const begin, const char* const end) noexcept {
+  const char* p = begin;
+  while (p != end) {
+    const char c = *p;
+    if (c == ' ' || c == '\t' || c == '\r' || c == '\n') {
+      ++p;
+    } else if (c == '$') {
+      const void* lf = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
+      const char* stop = lf ? static_cast<const char*>(lf) : end;
+      const void* cr = std::memchr(p, '\r', static_cast<std::size_t>(stop - p));
+      p = cr ? static_cast<const char*>(cr) : stop;
+    } else {
+      break;
+    }
+  }
+  return static_cast<std::size_t>(p - begin);
+}
+
+// star<trivia>. The grammar looks ahead past trivia before most tokens
+// (at<skip, ...>), so skip runs far more often without actions than with:
+// then it is one loop over the bytes; with actions, the rule proper so that
+// each blank, newline and comment still becomes its own token.
+struct skip {
+  using rule_t = skip;
+  using subs_t = pg::type_list<pg::star<trivia>>;
+  template <pg::apply_mode A, pg::rewind_mode M, template <typename...> class Action,
+            template <typename...> class Control, typename ParseInput, typename... States>
+  [[nodiscard]] static bool match(ParseInput& in, States&&... st) {
+    if constexpr (A == pg::apply_mode::nothing) {
+      in.bump(trivia_length(in.current(), in.end()));
+      return true;
+    } else {
+      return pg::match<pg::star<trivia>, A, M, Action, Control>(in, st...);
+    }
+  }
+};
 
 // ---- section headers ------------------------------------------------------------
 struct name_char : pg::sor<pg::ranges<'a', 'z', 'A', 'Z', '0', '9'>, pg::one<'_', '.', '/', '\\', '-'>> {};
@@ -55,8 +200,9 @@ struct section_header : pg::sor<pg::seq<pg::at<good_header>, good_header>, bad_h
 struct escape : pg::seq<pg::one<'\\'>, pg::not_one<'\r', '\n'>> {};
 struct string_char : pg::sor<escape, pg::not_one<'"', '\\', '\r', '\n'>> {};
 struct string_open : pg::seq<pg::opt<pg::one<'L'>>, pg::one<'"'>> {};
-struct string_piece : pg::seq<string_open, pg::star<string_char>, pg::one<'"'>> {};
-struct unterminated_string : pg::seq<string_open, pg::star<string_char>, pg::opt<pg::one<'\\'>>> {};
+// string_chars is star<string_char>.
+struct string_piece : pg::seq<string_open, string_chars, pg::one<'"'>> {};
+struct unterminated_string : pg::seq<string_open, string_chars, pg::opt<pg::one<'\\'>>> {};
 struct string_token : pg::sor<string_piece, unterminated_string> {};
 struct string_seq : pg::seq<string_token, pg::star<pg::at<skip, string_open>, skip, string_token>> {};
 
@@ -72,8 +218,10 @@ struct new_entry_ahead : pg::seq<entry_keyword_text, skip, pg::one<'='>> {};
 struct bare_char : pg::not_one<',', ';', '"', '{', '}', '$', ' ', '\t', '\r', '\n', '=', '[', ']'> {};
 // Words separated by single-line blanks stay one value: some tools write
 // unquoted EPATHs (`20 66 24 01`); the validator judges the text.
-struct bare : pg::seq<pg::plus<bare_char>,
-                      pg::star<pg::plus<pg::one<' ', '\t'>>, pg::not_at<new_entry_ahead>, pg::plus<bare_char>>> {};
+// bare_run is plus<bare_char>.
+struct bare_run : scan_run<stop_bare, true> {};
+struct bare_gap : blank_run {};  // not `blank`: no trivia token inside a value
+struct bare : pg::seq<bare_run, pg::star<bare_gap, pg::not_at<new_entry_ahead>, bare_run>> {};
 struct lbrace : pg::one<'{'> {};
 struct rbrace : pg::one<'}'> {};
 struct deep_lbrace : pg::one<'{'> {};
