@@ -55,12 +55,33 @@ void set_section(model::device& dev, section_family f, std::uint32_t s) {
   }
 }
 
+// Reserves the big model arrays from the entry count of their sections (an
+// upper bound: [Params] also holds EnumN). A ParamN is 2.7 KB in the model,
+// so regrowth by doubling would copy and page in far more than the result.
+void reserve_model(lowering::context& c) {
+  std::size_t params = 0, assemblies = 0, connections = 0;
+  for (const auto& sec : c.tree.sections) {
+    const auto* desc = schema::find_section(c.tree.text(sec.name));
+    if (!desc) continue;
+    switch (desc->family) {
+      case section_family::params: params += sec.entries_count; break;
+      case section_family::assembly: assemblies += sec.entries_count; break;
+      case section_family::connection_manager: connections += sec.entries_count; break;
+      default: break;
+    }
+  }
+  c.dev.params.reserve(params);
+  c.dev.assemblies.reserve(assemblies);
+  c.dev.connections.reserve(connections);
+}
+
 void lower_all(lowering::context& c) {
   const auto& tree = c.tree;
   auto& dev = c.dev;
   for (std::uint32_t e = 0; e < tree.entries.size(); ++e)
     if (tree.entries[e].section == cst::npos) c.keep_raw(e, model::raw_reason::outside_section);
   dev.sections.reserve(tree.sections.size());
+  reserve_model(c);
   for (std::uint32_t si = 0; si < tree.sections.size(); ++si) {
     const auto& sec = tree.sections[si];
     c.section = si;
@@ -84,6 +105,7 @@ void lower_all(lowering::context& c) {
     }
   }
   lowering::build_index(dev);
+  dev.enums.reserve(c.deferred_enums.size());
   // EnumN after every ParamN: its values are typed by the parameter.
   for (const auto e : c.deferred_enums) {
     const auto* s = schema::find_section("Params");
