@@ -48,13 +48,13 @@ enum class field_kind : std::uint8_t { empty, string, bare, dataset };
 struct field {
   span where;
   field_kind kind = field_kind::empty;
+  bool closed = true;  // dataset with its `}` (next to `kind`: 36 bytes, not 40)
   std::uint32_t first_token = 0;  // significant tokens of the value: [first, end)
   std::uint32_t end_token = 0;
   std::uint32_t pieces_begin = 0;  // strings: token indices in cst::pieces
   std::uint32_t pieces_count = 0;
   std::uint32_t children_begin = 0;  // datasets: field indices in cst::field_lists
   std::uint32_t children_count = 0;
-  bool closed = true;  // dataset with its `}`
 };
 
 // `Keyword = field, field, ... ;`

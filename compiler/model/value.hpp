@@ -71,7 +71,9 @@ struct reference {
 };
 
 // One field, typed by its schema. Small and copyable; text points into the
-// source or into device::strings, both of which outlive the model.
+// source or into device::strings, both of which outlive the model. A ParamN
+// holds 24 of these, so the members are ordered to leave no padding holes
+// (the flags share one 8-byte slot): the model is most of edsc's memory.
 struct value {
   origin from;
   std::string_view raw;  // the field exactly as written (strings: all pieces, quotes included)
@@ -82,6 +84,7 @@ struct value {
   bool negative = false;  // integer sign
   bool hex = false;       // integer written as 0x...
   bool wide = false;      // string written L"..."
+  bool is_ref = false;    // `ref` is meaningful (references and number refs != 0)
   std::uint64_t magnitude = 0;  // integer |value|
   double real = 0;              // real (also set for integers, for convenience)
   std::string_view text;        // decoded string / keyword / reference spelling
@@ -89,7 +92,6 @@ struct value {
   time_of_day t;
   revision r;
   reference ref;                // kind == reference, and number_ref fields
-  bool is_ref = false;          // `ref` is meaningful (references and number refs != 0)
   schema::ref_mask allowed = 0; // kinds the schema allows a reference to name
   std::uint32_t path = none;    // kind == epath: index into device::paths
 
