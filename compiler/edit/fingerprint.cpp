@@ -1,5 +1,8 @@
 #include "edit/fingerprint.hpp"
 
+#include <algorithm>
+#include <cctype>
+
 #include "edit/analyze.hpp"
 #include "emit/emit_json.hpp"
 
@@ -41,12 +44,34 @@ void normalise(nlohmann::ordered_json& j) {
   }
 }
 
+// Where `fmt` puts a section: [File], [Device], [Device Classification] first
+// (edit/format.cpp), every other section in its original order.
+int section_rank(const nlohmann::ordered_json& section) {
+  const auto it = section.find("name");
+  if (it == section.end() || !it->is_string()) return 3;
+  std::string name = it->get<std::string>();
+  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (name == "file") return 0;
+  if (name == "device") return 1;
+  if (name == "device classification") return 2;
+  return 3;
+}
+
 }  // namespace
 
 std::string model_fingerprint(const std::string& path, const std::string& text) {
   const auto a = analyze(path, text);
   auto j = emit::to_json(a->dev, *a->source);
   normalise(j);
+  // Section order means nothing in an EDS, but the dump lists sections as
+  // written, and fmt moves the identity sections to the top: without this a
+  // file with [Device Classification] after [Params] could never be formatted
+  // ("internal error: formatting would change the file's meaning"). Found by
+  // fuzz_fmt.
+  if (auto it = j.find("sections"); it != j.end() && it->is_array()) {
+    std::stable_sort(it->begin(), it->end(),
+                     [](const auto& a, const auto& b) { return section_rank(a) < section_rank(b); });
+  }
   return j.dump();
 }
 
