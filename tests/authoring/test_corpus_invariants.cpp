@@ -87,7 +87,10 @@ TEST(CorpusInvariants, FixIsIdempotent) {
     EXPECT_TRUE(twice.applied.empty()) << twice.applied.front().where << " " << twice.applied.front().message;
     EXPECT_TRUE(twice.text == once.text);
     // Nothing left that carries a fix-it.
-    for (const auto& d : edit::analyze(p.string(), once.text)->diags) EXPECT_TRUE(d.fixits.empty()) << d.message;
+    // Named: a range-for over `analyze(...)->diags` would destroy the analysis
+    // before the loop body reads it (found by ASan).
+    const auto after = edit::analyze(p.string(), once.text);
+    for (const auto& d : after->diags) EXPECT_TRUE(d.fixits.empty()) << d.message;
     repaired += once.applied.empty() ? 0 : 1;
     if (once.applied.empty()) {
       EXPECT_TRUE(once.text == bytes);
