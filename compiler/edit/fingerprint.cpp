@@ -45,10 +45,11 @@ void normalise(nlohmann::ordered_json& j) {
 }
 
 // Where `fmt` puts a section: [File], [Device], [Device Classification] first
-// (edit/format.cpp), every other section in its original order.
-int section_rank(const nlohmann::ordered_json& section) {
-  const auto it = section.find("name");
-  if (it == section.end() || !it->is_string()) return 3;
+// (edit/format.cpp), every other section in its original order. `item` is a
+// section of the dump (`name`) or an entry kept raw (`section`).
+int section_rank(const nlohmann::ordered_json& item, const char* key) {
+  const auto it = item.find(key);
+  if (it == item.end() || !it->is_string()) return 3;
   std::string name = it->get<std::string>();
   std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
   if (name == "file") return 0;
@@ -57,21 +58,27 @@ int section_rank(const nlohmann::ordered_json& section) {
   return 3;
 }
 
+// Puts the items of `array` in the order fmt gives their sections.
+void order_like_fmt(nlohmann::ordered_json& j, const char* array, const char* key) {
+  const auto it = j.find(array);
+  if (it == j.end() || !it->is_array()) return;
+  std::stable_sort(it->begin(), it->end(),
+                   [key](const auto& a, const auto& b) { return section_rank(a, key) < section_rank(b, key); });
+}
+
 }  // namespace
 
 std::string model_fingerprint(const std::string& path, const std::string& text) {
   const auto a = analyze(path, text);
   auto j = emit::to_json(a->dev, *a->source);
   normalise(j);
-  // Section order means nothing in an EDS, but the dump lists sections as
-  // written, and fmt moves the identity sections to the top: without this a
-  // file with [Device Classification] after [Params] could never be formatted
-  // ("internal error: formatting would change the file's meaning"). Found by
-  // fuzz_fmt.
-  if (auto it = j.find("sections"); it != j.end() && it->is_array()) {
-    std::stable_sort(it->begin(), it->end(),
-                     [](const auto& a, const auto& b) { return section_rank(a) < section_rank(b); });
-  }
+  // Section order means nothing in an EDS, but the dump lists sections and
+  // the entries it keeps raw as written, and fmt moves the identity sections
+  // to the top: without this a file with [Device Classification] after
+  // [Params] could never be formatted ("internal error: formatting would
+  // change the file's meaning"). Found by fuzz_fmt.
+  order_like_fmt(j, "sections", "name");
+  order_like_fmt(j, "unknown_entries", "section");
   return j.dump();
 }
 
