@@ -50,8 +50,7 @@ void normalise(nlohmann::ordered_json& j) {
 int section_rank(const nlohmann::ordered_json& item, const char* key) {
   const auto it = item.find(key);
   if (it == item.end() || !it->is_string()) return 3;
-  std::string name = it->get<std::string>();
-  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
+  const auto& name = it->get_ref<const std::string&>();  // lower case: see order_like_fmt
   if (name == "file") return 0;
   if (name == "device") return 1;
   if (name == "device classification") return 2;
@@ -59,9 +58,17 @@ int section_rank(const nlohmann::ordered_json& item, const char* key) {
 }
 
 // Puts the items of `array` in the order fmt gives their sections.
+// Section names are compared in lower case: they match case-insensitively,
+// and fmt writes known ones in the schema's spelling.
 void order_like_fmt(nlohmann::ordered_json& j, const char* array, const char* key) {
   const auto it = j.find(array);
   if (it == j.end() || !it->is_array()) return;
+  for (auto& item : *it) {
+    if (const auto name = item.find(key); name != item.end() && name->is_string()) {
+      auto& text = name->get_ref<std::string&>();
+      std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+    }
+  }
   std::stable_sort(it->begin(), it->end(),
                    [key](const auto& a, const auto& b) { return section_rank(a, key) < section_rank(b, key); });
 }
@@ -72,9 +79,9 @@ std::string model_fingerprint(const std::string& path, const std::string& text) 
   const auto a = analyze(path, text);
   auto j = emit::to_json(a->dev, *a->source);
   normalise(j);
-  // Section order means nothing in an EDS, but the dump lists sections and
-  // the entries it keeps raw as written, and fmt moves the identity sections
-  // to the top: without this a file with [Device Classification] after
+  // Section order and case mean nothing in an EDS, but the dump lists
+  // sections and the entries it keeps raw as written, and fmt moves the
+  // identity sections to the top and respells known names: without this a file with [Device Classification] after
   // [Params] could never be formatted ("internal error: formatting would
   // change the file's meaning"). Found by fuzz_fmt.
   order_like_fmt(j, "sections", "name");
