@@ -58,16 +58,22 @@ int section_rank(const nlohmann::ordered_json& item, const char* key) {
 }
 
 // Puts the items of `array` in the order fmt gives their sections.
-// Section names are compared in lower case: they match case-insensitively,
-// and fmt writes known ones in the schema's spelling.
+void to_lower(nlohmann::ordered_json& item, const char* key) {
+  if (const auto it = item.find(key); it != item.end() && it->is_string()) {
+    auto& text = it->get_ref<std::string&>();
+    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+  }
+}
+
+// Section names (and the keywords of raw-kept entries) are compared in lower
+// case: they match case-insensitively, and fmt writes known ones in the
+// schema's spelling.
 void order_like_fmt(nlohmann::ordered_json& j, const char* array, const char* key) {
   const auto it = j.find(array);
   if (it == j.end() || !it->is_array()) return;
   for (auto& item : *it) {
-    if (const auto name = item.find(key); name != item.end() && name->is_string()) {
-      auto& text = name->get_ref<std::string&>();
-      std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
-    }
+    to_lower(item, key);
+    to_lower(item, "keyword");
   }
   std::stable_sort(it->begin(), it->end(),
                    [key](const auto& a, const auto& b) { return section_rank(a, key) < section_rank(b, key); });
