@@ -33,11 +33,22 @@ std::string pieces_only(const std::string& raw) {
   return out;
 }
 
+void to_lower(nlohmann::ordered_json& item, const char* key) {
+  if (const auto it = item.find(key); it != item.end() && it->is_string()) {
+    auto& text = it->get_ref<std::string&>();
+    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+  }
+}
+
 void normalise(nlohmann::ordered_json& j) {
   if (j.is_object()) {
     j.erase("line");
     j.erase("column");
     if (auto it = j.find("raw"); it != j.end() && it->is_string()) *it = pieces_only(it->get<std::string>());
+    // Keywords and section names match case-insensitively, and fmt respells
+    // known ones.
+    to_lower(j, "keyword");
+    to_lower(j, "section");
     for (auto& [k, v] : j.items()) normalise(v);
   } else if (j.is_array()) {
     for (auto& v : j) normalise(v);
@@ -58,23 +69,12 @@ int section_rank(const nlohmann::ordered_json& item, const char* key) {
 }
 
 // Puts the items of `array` in the order fmt gives their sections.
-void to_lower(nlohmann::ordered_json& item, const char* key) {
-  if (const auto it = item.find(key); it != item.end() && it->is_string()) {
-    auto& text = it->get_ref<std::string&>();
-    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
-  }
-}
-
-// Section names (and the keywords of raw-kept entries) are compared in lower
-// case: they match case-insensitively, and fmt writes known ones in the
-// schema's spelling.
+// Section names are compared in lower case: they match case-insensitively,
+// and fmt writes known ones in the schema's spelling.
 void order_like_fmt(nlohmann::ordered_json& j, const char* array, const char* key) {
   const auto it = j.find(array);
   if (it == j.end() || !it->is_array()) return;
-  for (auto& item : *it) {
-    to_lower(item, key);
-    to_lower(item, "keyword");
-  }
+  for (auto& item : *it) to_lower(item, key);
   std::stable_sort(it->begin(), it->end(),
                    [key](const auto& a, const auto& b) { return section_rank(a, key) < section_rank(b, key); });
 }
