@@ -20,7 +20,6 @@ namespace edsc::driver {
 
 namespace {
 
-enum class report_format { text, json, sarif };
 
 struct check_cli {
   std::vector<std::string> inputs;
@@ -150,17 +149,7 @@ void register_check(CLI::App& app, command_action& run) {
   auto* cmd = app.add_subcommand("check", "Parse and check EDS files, reporting problems like a compiler");
   cmd->add_option("inputs", cli->inputs, "EDS files, or directories searched recursively for *.eds")
       ->required();
-  const std::map<std::string, color_mode> colors{
-      {"auto", color_mode::auto_detect}, {"always", color_mode::always}, {"never", color_mode::never}};
-  cmd->add_option("--color", cli->color, "Colour the text output: auto (on a terminal), always, never")
-      ->transform(CLI::CheckedTransformer(colors, CLI::ignore_case));
-  const std::map<std::string, report_format> formats{
-      {"text", report_format::text}, {"json", report_format::json}, {"sarif", report_format::sarif}};
-  cmd->add_option("--format", cli->format, "Report format: text, json, sarif (SARIF 2.1.0)")
-      ->transform(CLI::CheckedTransformer(formats, CLI::ignore_case));
-  cmd->add_option("-W", cli->warning_flags,
-                  "-Werror, -W<id|group>, -Wno-<id|group>, -Werror=<id|group>, -Wno-error=<id|group>")
-      ->allow_extra_args(false);
+  add_report_options(cmd, cli->color, cli->format, cli->warning_flags);
   cmd->add_option("--max-errors", cli->max_errors, "Show at most N errors (0: all)");
   const std::map<std::string, std::uint8_t> networks{{"devicenet", model::net_devicenet},
                                                       {"ethernetip", model::net_ethernetip},

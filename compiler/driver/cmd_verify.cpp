@@ -18,7 +18,6 @@ namespace edsc::driver {
 
 namespace {
 
-enum class report_format { text, json, sarif };
 
 struct verify_cli {
   std::string eds, capture, decode;
@@ -111,16 +110,7 @@ void register_verify(CLI::App& app, command_action& run) {
   cmd->add_option("--mac", cli->mac, "Compare only the node at this MAC ID (default: every node heard)")
       ->check(CLI::Range(0, 63));
   cmd->add_option("--decode", cli->decode, "Print the decoded conversation of this log as a table, compare nothing");
-  const std::map<std::string, color_mode> colors{
-      {"auto", color_mode::auto_detect}, {"always", color_mode::always}, {"never", color_mode::never}};
-  cmd->add_option("--color", cli->color, "Colour the text output: auto (on a terminal), always, never")
-      ->transform(CLI::CheckedTransformer(colors, CLI::ignore_case));
-  const std::map<std::string, report_format> formats{
-      {"text", report_format::text}, {"json", report_format::json}, {"sarif", report_format::sarif}};
-  cmd->add_option("--format", cli->format, "Report format: text, json, sarif (SARIF 2.1.0)")
-      ->transform(CLI::CheckedTransformer(formats, CLI::ignore_case));
-  cmd->add_option("-W", cli->warning_flags, "-Werror, -W<id|group>, -Wno-<id|group>, -Werror=<id|group>...")
-      ->allow_extra_args(false);
+  add_report_options(cmd, cli->color, cli->format, cli->warning_flags);
   cmd->callback([&run, cli] { run = [cli] { return run_verify(*cli); }; });
 }
 

@@ -1,6 +1,7 @@
 #include "driver/output.hpp"
 
 #include <cstdlib>
+#include <map>
 
 #include <unistd.h>
 
@@ -25,6 +26,21 @@ void print_error(std::string_view message) {
   line += message;
   line += '\n';
   write_all(stderr, line);
+}
+
+void add_report_options(CLI::App* cmd, color_mode& color, report_format& format,
+                        std::vector<std::string>& warning_flags) {
+  const std::map<std::string, color_mode> colors{
+      {"auto", color_mode::auto_detect}, {"always", color_mode::always}, {"never", color_mode::never}};
+  cmd->add_option("--color", color, "Colour the text output: auto (on a terminal), always, never")
+      ->transform(CLI::CheckedTransformer(colors, CLI::ignore_case));
+  const std::map<std::string, report_format> formats{
+      {"text", report_format::text}, {"json", report_format::json}, {"sarif", report_format::sarif}};
+  cmd->add_option("--format", format, "Report format: text, json, sarif (SARIF 2.1.0)")
+      ->transform(CLI::CheckedTransformer(formats, CLI::ignore_case));
+  cmd->add_option("-W", warning_flags,
+                  "-Werror, -W<id|group>, -Wno-<id|group>, -Werror=<id|group>, -Wno-error=<id|group>")
+      ->allow_extra_args(false);
 }
 
 std::unique_ptr<source_file> read_or_report(const std::string& path) {
