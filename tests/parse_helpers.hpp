@@ -51,12 +51,12 @@ struct parsed {
   }
   [[nodiscard]] std::vector<std::string> children(const cst::field& f) const {
     std::vector<std::string> out;
-    for (std::uint32_t i = 0; i < f.children_count; ++i) out.emplace_back(text(tree().child_of(f, i).where));
+    for (std::uint32_t i = 0; i < f.children_count(); ++i) out.emplace_back(text(tree().child_of(f, i).where));
     return out;
   }
   [[nodiscard]] std::vector<std::string> pieces(const cst::field& f) const {
     std::vector<std::string> out;
-    for (std::uint32_t i = 0; i < f.pieces_count; ++i) out.emplace_back(tree().text(tree().piece_of(f, i)));
+    for (std::uint32_t i = 0; i < f.pieces_count(); ++i) out.emplace_back(tree().text(tree().piece_of(f, i)));
     return out;
   }
   [[nodiscard]] std::vector<std::string> keywords() const {

@@ -26,6 +26,8 @@ struct check_context {
 
   // Where to point for a value: the field itself, or its entry's keyword when
   // the field is absent, or the section header when the entry is.
+  // A field exactly as written, for messages.
+  [[nodiscard]] std::string_view raw(const model::value& v) const { return tree.text(v.from.where); }
   [[nodiscard]] span where(const model::value& v) const {
     if (!v.from.where.empty() || v.present()) return v.from.where;
     if (v.from.entry != model::none) return tree.entries[v.from.entry].keyword;

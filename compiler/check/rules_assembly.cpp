@@ -42,7 +42,7 @@ void check_odd_members(const check_context& ctx, const model::assembly& a) {
   ctx.report(diag_id::assembly_odd_members, ctx.where(a.dangling),
              fmt::format("{} has an odd number of member fields: the last member size '{}' has no reference "
                          "field (write `{},` for padding)",
-                         assembly_name(a), a.dangling.raw, a.dangling.raw));
+                         assembly_name(a), ctx.raw(a.dangling), ctx.raw(a.dangling)));
 }
 
 void check_total(const check_context& ctx, const model::assembly& a) {

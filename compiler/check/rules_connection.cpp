@@ -152,7 +152,7 @@ void check_size(const check_context& ctx, const std::string& cn, const direction
   if (!below && !above) return;
   ctx.report_with_note(diag_id::connection_size_format, ctx.where(d.size),
                        fmt::format("{} {} size {} ranges {}..{}, which excludes the {} bytes of its format {}", cn,
-                                   d.name, d.size.text, p->min.raw, p->max.raw, *bytes, assembly_name(*a)),
+                                   d.name, d.size.text, ctx.raw(p->min), ctx.raw(p->max), *bytes, assembly_name(*a)),
                        assembly_size_at(ctx, *a), fmt::format("{} size is given here", assembly_name(*a)));
 }
 

@@ -27,15 +27,15 @@ void check_enum(const check_context& ctx, const model::param_enum& e) {
     if (!v.is_integer()) continue;
     if (const auto [it, fresh] = seen.emplace(std::pair{v.negative, v.magnitude}, &v); !fresh) {
       ctx.report_with_note(diag_id::enum_duplicate_value, ctx.where(v),
-                           fmt::format("Enum{} lists value {} twice", e.number, v.raw), ctx.where(*it->second),
+                           fmt::format("Enum{} lists value {} twice", e.number, ctx.raw(v)), ctx.where(*it->second),
                            "first listed here");
     }
     const bool below = is_number(p.min) && compare_numbers(v, p.min) < 0;
     const bool above = is_number(p.max) && compare_numbers(v, p.max) > 0;
     if (below || above) {
       ctx.report(diag_id::enum_value_range, ctx.where(v),
-                 fmt::format("Enum{} value {} is outside Param{}'s range {} to {}", e.number, v.raw, p.number,
-                             p.min.raw, p.max.raw));
+                 fmt::format("Enum{} value {} is outside Param{}'s range {} to {}", e.number, ctx.raw(v), p.number,
+                             ctx.raw(p.min), ctx.raw(p.max)));
     }
   }
 }
@@ -66,7 +66,7 @@ void check_enum_par(const check_context& ctx, const model::enum_par& e) {
   if (span_of_values != e.strings.size()) {
     ctx.report(diag_id::enumpar_count, ctx.entry_keyword(e.from),
                fmt::format("[EnumPar] Param{} lists {} strings for the {} values {} to {}", e.number,
-                           e.strings.size(), span_of_values, p.min.raw, p.max.raw));
+                           e.strings.size(), span_of_values, ctx.raw(p.min), ctx.raw(p.max)));
   }
 }
 

@@ -45,7 +45,7 @@ void check_string_limits(const check_context& ctx, const model::param& p) {
   if (too_short || too_long) {
     ctx.report(diag_id::param_string_length, ctx.where(def),
                fmt::format("Param{} default is {} characters, outside its length bounds {} to {}", p.number,
-                           length, p.min.raw, p.max.raw));
+                           length, ctx.raw(p.min), ctx.raw(p.max)));
   }
 }
 
@@ -60,18 +60,18 @@ void check_limits(const check_context& ctx, const model::param& p) {
   const auto& def = p.default_value;
   if (is_number(lo) && is_number(hi) && compare_numbers(lo, hi) > 0) {
     ctx.report_with_note(diag_id::param_min_max, ctx.where(lo),
-                         fmt::format("Param{} minimum {} is greater than its maximum {}", p.number, lo.raw, hi.raw),
+                         fmt::format("Param{} minimum {} is greater than its maximum {}", p.number, ctx.raw(lo), ctx.raw(hi)),
                          ctx.where(hi), "the maximum is here");
     return;
   }
   if (!is_number(def)) return;
   if (is_number(lo) && compare_numbers(def, lo) < 0) {
     ctx.report_with_note(diag_id::param_default_range, ctx.where(def),
-                         fmt::format("Param{} default {} is below its minimum {}", p.number, def.raw, lo.raw),
+                         fmt::format("Param{} default {} is below its minimum {}", p.number, ctx.raw(def), ctx.raw(lo)),
                          ctx.where(lo), "the minimum is here");
   } else if (is_number(hi) && compare_numbers(def, hi) > 0) {
     ctx.report_with_note(diag_id::param_default_range, ctx.where(def),
-                         fmt::format("Param{} default {} is above its maximum {}", p.number, def.raw, hi.raw),
+                         fmt::format("Param{} default {} is above its maximum {}", p.number, ctx.raw(def), ctx.raw(hi)),
                          ctx.where(hi), "the maximum is here");
   }
 }

@@ -37,9 +37,9 @@ std::string why_text(const model::value& v) {
 void check_values(const check_context& ctx) {
   model::for_each_value(ctx.dev, [&](const model::value& v) {
     if (!v.invalid()) return;
-    std::string raw(v.raw.substr(0, 60));
+    std::string raw(ctx.raw(v).substr(0, 60));
     ctx.report(v.why == model::invalid_reason::bad_base64 ? diag_id::icon_base64 : diag_id::invalid_value,
-               ctx.where(v), fmt::format("'{}'{} {}", raw, v.raw.size() > 60 ? "..." : "", why_text(v)));
+               ctx.where(v), fmt::format("'{}'{} {}", raw, ctx.raw(v).size() > 60 ? "..." : "", why_text(v)));
   });
 }
 

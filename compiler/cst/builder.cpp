@@ -199,13 +199,13 @@ void builder::add_value_token(field_kind kind, std::uint32_t tok) {
     f.kind = kind;
     f.where.begin = s.begin;
     f.first_token = tok;
-    if (kind == field_kind::string) f.pieces_begin = static_cast<std::uint32_t>(t_.pieces.size());
+    if (kind == field_kind::string) f.list_begin = static_cast<std::uint32_t>(t_.pieces.size());
   }
   f.where.end = s.end;
   f.end_token = tok + 1;
-  if (kind == field_kind::string) {
+  if (kind == field_kind::string && f.kind == field_kind::string) {
     t_.pieces.push_back(tok);
-    ++f.pieces_count;
+    ++f.list_count;
   }
 }
 
@@ -286,8 +286,13 @@ void builder::close_frame() {
     e.fields_count = count;
   } else {
     auto& f = t_.fields[fr.owner];
-    f.children_begin = begin;
-    f.children_count = count;
+    // A `{` always starts its own field (after a value the grammar reports
+    // the missing comma and opens a new one), so the owner is a dataset and
+    // the list cannot overwrite string pieces.
+    if (f.kind == field_kind::dataset) {
+      f.list_begin = begin;
+      f.list_count = count;
+    }
     // A dataset closed without its `}` still holds its children: its value
     // runs to the last significant token so far, not just to its `{`.
     std::uint32_t end = static_cast<std::uint32_t>(t_.tokens.size());

@@ -34,7 +34,7 @@ void append_tokens(const tree& t, std::uint32_t first, std::uint32_t end, std::s
 
 // The first dataset child (at any depth) whose tokens lie outside its parent's.
 std::uint32_t first_stray_child(const tree& t, const field& f) {
-  for (std::uint32_t i = 0; i < f.children_count; ++i) {
+  for (std::uint32_t i = 0; i < f.children_count(); ++i) {
     const auto& c = t.child_of(f, i);
     if (c.kind != field_kind::empty && (c.first_token < f.first_token || c.end_token > f.end_token)) {
       return c.first_token;
@@ -58,9 +58,10 @@ std::string print(const tree& t) {
 
 std::uint32_t first_structure_violation(const tree& t) {
   const std::uint32_t n = static_cast<std::uint32_t>(t.tokens.size());
+  if (t.tokens.first_gap() != npos) return t.tokens.first_gap();
   std::uint32_t at = 0;
   for (const auto& tok : t.tokens) {
-    if (tok.where.begin != at || tok.where.end <= tok.where.begin) return at;
+    if (tok.where.end <= tok.where.begin) return at;
     at = tok.where.end;
   }
   if (at != t.source->size()) return at;

@@ -1,5 +1,7 @@
 #pragma once
+#include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -41,6 +43,58 @@ struct token {
   token_kind kind;
 };
 
+// The tokens of a file, five bytes each: because they tile the input, a token
+// begins where the previous one ends, so only ends and kinds are stored (the
+// token array would otherwise be the largest part of the tree). Elements are
+// read by value.
+class token_list {
+ public:
+  class iterator {
+   public:
+    using iterator_category = std::input_iterator_tag;
+    using value_type = token;
+    using difference_type = std::ptrdiff_t;
+    using pointer = void;
+    using reference = token;
+    iterator(const token_list* l, std::size_t i) : list_(l), i_(i) {}
+    token operator*() const { return (*list_)[i_]; }
+    iterator& operator++() { ++i_; return *this; }
+    iterator operator++(int) { auto old = *this; ++i_; return old; }
+    friend bool operator==(const iterator& a, const iterator& b) { return a.i_ == b.i_; }
+   private:
+    const token_list* list_;
+    std::size_t i_;
+  };
+
+  void reserve(std::size_t n) {
+    ends_.reserve(n);
+    kinds_.reserve(n);
+  }
+  void push_back(token t) {
+    // A token that does not start where the last one ended cannot be stored
+    // faithfully; remember the first such offset for first_structure_violation.
+    if (t.where.begin != end_offset() && gap_ == npos) gap_ = end_offset();
+    ends_.push_back(t.where.end);
+    kinds_.push_back(t.kind);
+  }
+  [[nodiscard]] std::size_t size() const { return ends_.size(); }
+  [[nodiscard]] bool empty() const { return ends_.empty(); }
+  [[nodiscard]] token operator[](std::size_t i) const {
+    return {span{i == 0 ? 0 : ends_[i - 1], ends_[i]}, kinds_[i]};
+  }
+  [[nodiscard]] token back() const { return (*this)[size() - 1]; }
+  [[nodiscard]] iterator begin() const { return {this, 0}; }
+  [[nodiscard]] iterator end() const { return {this, size()}; }
+  // Where the last token ends (0 when there is none).
+  [[nodiscard]] std::uint32_t end_offset() const { return ends_.empty() ? 0 : ends_.back(); }
+  [[nodiscard]] std::uint32_t first_gap() const { return gap_; }
+
+ private:
+  std::vector<std::uint32_t> ends_;
+  std::vector<token_kind> kinds_;
+  std::uint32_t gap_ = npos;
+};
+
 enum class field_kind : std::uint8_t { empty, string, bare, dataset };
 
 // One comma-separated field. `where` spans the value only (first to last
@@ -48,14 +102,20 @@ enum class field_kind : std::uint8_t { empty, string, bare, dataset };
 struct field {
   span where;
   field_kind kind = field_kind::empty;
-  bool closed = true;  // dataset with its `}` (next to `kind`: 36 bytes, not 40)
+  bool closed = true;  // dataset with its `}` (next to `kind`: no padding hole)
   std::uint32_t first_token = 0;  // significant tokens of the value: [first, end)
   std::uint32_t end_token = 0;
-  std::uint32_t pieces_begin = 0;  // strings: token indices in cst::pieces
-  std::uint32_t pieces_count = 0;
-  std::uint32_t children_begin = 0;  // datasets: field indices in cst::field_lists
-  std::uint32_t children_count = 0;
+  // Strings: their pieces' token indices in cst::pieces; datasets: their
+  // children's field indices in cst::field_lists. A field is one or the other
+  // (a value after a value starts a new field), so they share the two
+  // numbers: fields are a third of the tree's memory.
+  std::uint32_t list_begin = 0;
+  std::uint32_t list_count = 0;
+
+  [[nodiscard]] std::uint32_t pieces_count() const { return kind == field_kind::string ? list_count : 0; }
+  [[nodiscard]] std::uint32_t children_count() const { return kind == field_kind::dataset ? list_count : 0; }
 };
+static_assert(sizeof(field) == 28);
 
 // `Keyword = field, field, ... ;`
 struct entry {
@@ -87,7 +147,7 @@ struct section {
 // number, which keeps parsing free of per-node allocations.
 struct tree {
   const source_file* source = nullptr;
-  std::vector<token> tokens;
+  token_list tokens;
   std::vector<section> sections;
   std::vector<entry> entries;
   std::vector<field> fields;
@@ -102,10 +162,10 @@ struct tree {
     return fields[field_lists[e.fields_begin + i]];
   }
   [[nodiscard]] const field& child_of(const field& f, std::uint32_t i) const {
-    return fields[field_lists[f.children_begin + i]];
+    return fields[field_lists[f.list_begin + i]];
   }
-  [[nodiscard]] const token& piece_of(const field& f, std::uint32_t i) const {
-    return tokens[pieces[f.pieces_begin + i]];
+  [[nodiscard]] token piece_of(const field& f, std::uint32_t i) const {
+    return tokens[pieces[f.list_begin + i]];
   }
   [[nodiscard]] const entry& entry_of(const section& s, std::uint32_t i) const {
     return entries[s.entries_begin + i];

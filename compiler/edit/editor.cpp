@@ -118,7 +118,7 @@ replacement editor::field_change(std::uint32_t entry, std::uint32_t index, std::
   }
   const auto& f = tree_.field_of(e, index);
   // A string written one piece per line keeps that shape.
-  if (f.kind == cst::field_kind::string && f.pieces_count >= 2) {
+  if (f.kind == cst::field_kind::string && f.pieces_count() >= 2) {
     const auto second = tree_.piece_of(f, 1).where.begin;
     const auto pieces = pieces_of(value);
     if (pieces.size() >= 2 && starts_line(text_, second)) {

@@ -31,7 +31,7 @@ std::vector<unit> units_of(const cst::tree& t, const cst::entry& e, std::string_
   for (std::uint32_t i = 0; i < e.fields_count; ++i) {
     const auto& f = t.field_of(e, i);
     if (f.kind == cst::field_kind::string) {
-      for (std::uint32_t p = 0; p < f.pieces_count; ++p) {
+      for (std::uint32_t p = 0; p < f.pieces_count(); ++p) {
         const auto& tok = t.piece_of(f, p);
         out.push_back({tok.where, std::string(t.text(tok)), i, {}, {}});
       }

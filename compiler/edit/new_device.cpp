@@ -104,9 +104,9 @@ std::string make_eds(const device_spec& spec, const std::string& eol) {
     throw edit_error(fmt::format("unknown network '{}'; choose devicenet or ethernetip", s.network));
   if (!s.date.empty() && s.time.empty()) s.time = "00:00:00";
   now(s.date, s.time);
-  model::date d;
-  model::time_of_day t;
-  model::revision r;
+  model::date d{};
+  model::time_of_day t{};
+  model::revision r{};
   bool lexed = false;
   if (!model::decode::date(s.date, d, lexed)) throw edit_error(fmt::format("date '{}' is not mm-dd-yyyy", s.date));
   if (!model::decode::time(s.time, t, lexed)) throw edit_error(fmt::format("time '{}' is not hh:mm:ss", s.time));

@@ -22,18 +22,18 @@ std::uint64_t wire_bits(const value& v, const schema::cip_type_info* t, std::uin
       return v.kind == model::value_kind::integer ? v.as_uint() & mask : 0;
     case type_class::real:
       if (v.kind != model::value_kind::real && v.kind != model::value_kind::integer) return 0;
-      if (t->code == schema::code::REAL) return std::bit_cast<std::uint32_t>(static_cast<float>(v.real));
-      return std::bit_cast<std::uint64_t>(v.real);
+      if (t->code == schema::code::REAL) return std::bit_cast<std::uint32_t>(static_cast<float>(v.as_real()));
+      return std::bit_cast<std::uint64_t>(v.as_real());
     default:
       return 0;  // strings, EPATH, STRINGI: see default_text
   }
 }
 
-std::optional<std::string> text_default(const value& v, const schema::cip_type_info* t) {
+std::optional<std::string> text_default(const model::device& dev, const value& v, const schema::cip_type_info* t) {
   if (t == nullptr || !v.ok()) return std::nullopt;
   if (t->cls != type_class::string && t->cls != type_class::epath) return std::nullopt;
   if (v.kind == model::value_kind::string) return std::string(v.text);
-  std::string_view raw = v.raw;  // EPATH: its hex bytes without the quotes
+  std::string_view raw = dev.raw(v);  // EPATH: its hex bytes without the quotes
   if (raw.size() >= 2 && raw.front() == '"' && raw.back() == '"') raw = raw.substr(1, raw.size() - 2);
   return std::string(raw);
 }
@@ -63,7 +63,7 @@ std::vector<param_facts> collect_params(const model::device& dev) {
     f.min = wire_bits(p.min, p.type, width);
     f.max = wire_bits(p.max, p.type, width);
     f.default_value = wire_bits(p.default_value, p.type, width);
-    f.default_text = text_default(p.default_value, p.type);
+    f.default_text = text_default(dev, p.default_value, p.type);
     out.push_back(std::move(f));
   }
   return out;

@@ -142,7 +142,7 @@ json writer::value(const model::value& v) const {
   if (v.state == model::value_state::invalid) {
     json j;
     j["invalid"] = to_string(v.why);
-    j["raw"] = to_utf8(v.raw);
+    j["raw"] = to_utf8(src.text(v.from.where));
     const auto pos = src.position(v.from.where.begin);
     j["line"] = pos.line;
     j["column"] = pos.column;
@@ -159,11 +159,11 @@ json writer::value(const model::value& v) const {
       }
       if (v.negative) return json(v.as_int());
       return json(v.magnitude);
-    case value_kind::real: return json(v.real);
+    case value_kind::real: return json(v.as_real());
     case value_kind::string:
-      if (v.raw.find('\\') != std::string_view::npos) {  // keep the escaped spelling too
+      if (const auto raw = src.text(v.from.where); raw.find('\\') != std::string_view::npos) {  // keep the escaped spelling too
         j["text"] = to_utf8(v.text);
-        j["raw"] = to_utf8(v.raw);
+        j["raw"] = to_utf8(raw);
         return j;
       }
       return json(to_utf8(v.text));
@@ -185,7 +185,7 @@ json writer::value(const model::value& v) const {
       j["resolved"] = v.ref.resolved();
       return j;
     case value_kind::dataset:
-      j["dataset"] = to_utf8(v.raw);
+      j["dataset"] = to_utf8(v.text);
       return j;
     case value_kind::none: break;
   }

@@ -24,15 +24,17 @@ void mark_invalid(value& v, invalid_reason why) {
 void lower_string(context& c, const cst::field& f, value& v) {
   v.kind = value_kind::string;
   v.state = value_state::ok;
-  if (f.pieces_count == 1) {
-    const auto body = model::decode::piece_body(c.tree.text(c.tree.piece_of(f, 0)), v.wide);
+  if (f.pieces_count() == 1) {
+    bool wide = false;
+    const auto body = model::decode::piece_body(c.tree.text(c.tree.piece_of(f, 0)), wide);
+    v.wide = wide;
     if (!model::decode::has_escape(body)) {
       v.text = body;
       return;
     }
   }
   std::string s;
-  for (std::uint32_t i = 0; i < f.pieces_count; ++i) {
+  for (std::uint32_t i = 0; i < f.pieces_count(); ++i) {
     bool wide = false;
     model::decode::unescape_append(model::decode::piece_body(c.tree.text(c.tree.piece_of(f, i)), wide), s);
     v.wide = v.wide || wide;
@@ -168,7 +170,7 @@ value context::field(std::uint32_t entry, std::uint32_t index, const schema::fie
   const auto& e = tree.entries[entry];
   if (index >= e.fields_count) return v;
   const auto& f = tree.field_of(e, index);
-  v.raw = tree.text(f.where);
+  const auto raw = tree.text(f.where);
   switch (f.kind) {
     case cst::field_kind::empty:
       break;
@@ -182,12 +184,12 @@ value context::field(std::uint32_t entry, std::uint32_t index, const schema::fie
       break;
     case cst::field_kind::dataset:
       v.kind = value_kind::dataset;
-      v.text = v.raw;
+      v.text = raw;
       v.state = value_state::ok;
       if (d.type != value_type::stringi && d.type != value_type::any) mark_invalid(v, invalid_reason::wrong_kind);
       break;
     case cst::field_kind::bare:
-      lower_bare(v.raw, d, v);
+      lower_bare(raw, d, v);
       break;
   }
   return v;

@@ -60,7 +60,6 @@ bool integer(std::string_view s, value& out) {
   out.magnitude = m;
   out.negative = neg && m != 0;
   out.hex = hex;
-  out.real = neg ? -static_cast<double>(m) : static_cast<double>(m);
   return true;
 }
 

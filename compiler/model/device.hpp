@@ -104,8 +104,10 @@ struct device {
     return i == none ? nullptr : &params[i];
   }
   [[nodiscard]] const epath* path_of(const value& v) const {
-    return v.path == none ? nullptr : &paths[v.path];
+    return v.kind == value_kind::epath ? &paths[v.path] : nullptr;
   }
+  // The field exactly as written (strings: all pieces, quotes included).
+  [[nodiscard]] std::string_view raw(const value& v) const;
   [[nodiscard]] static std::uint64_t key(schema::ref_kind k, std::uint32_t n) {
     return (static_cast<std::uint64_t>(k) << 32) | n;
   }

@@ -43,20 +43,22 @@ enum class invalid_reason : std::uint8_t {
   bad_base64,     // IconContents that does not decode
 };
 
+// Date, time and revision are trivial (no member initialisers) so that they
+// can share storage inside `value`; initialise them with `{}`.
 struct date {
-  std::uint16_t year = 0;
-  std::uint8_t month = 0;
-  std::uint8_t day = 0;
+  std::uint16_t year;
+  std::uint8_t month;
+  std::uint8_t day;
 };
 struct time_of_day {
-  std::uint8_t hour = 0;
-  std::uint8_t minute = 0;
-  std::uint8_t second = 0;
+  std::uint8_t hour;
+  std::uint8_t minute;
+  std::uint8_t second;
 };
 // Two integers: `1.10` is minor 10, `1.1` minor 1.
 struct revision {
-  std::uint32_t major = 0;
-  std::uint32_t minor = 0;
+  std::uint32_t major;
+  std::uint32_t minor;
 };
 
 // A reference to another entry. `target` is an index into the model vector
@@ -72,28 +74,33 @@ struct reference {
 
 // One field, typed by its schema. Small and copyable; text points into the
 // source or into device::strings, both of which outlive the model. A ParamN
-// holds 24 of these, so the members are ordered to leave no padding holes
-// (the flags share one 8-byte slot): the model is most of edsc's memory.
+// holds 24 of these and the model is most of edsc's memory, so a value is
+// 64 bytes: members that belong to one kind share storage (the unions below,
+// read only after checking `kind`), flags are bits, and the field as written
+// is not stored but read back from the source through `from.where` (raw()).
 struct value {
   origin from;
-  std::string_view raw;  // the field exactly as written (strings: all pieces, quotes included)
+  std::string_view text;  // decoded string / keyword / reference spelling
   value_state state = value_state::absent;
   value_kind kind = value_kind::none;
   invalid_reason why = invalid_reason::none;
-  std::uint8_t cip = 0;   // CIP type code an integer was read as
-  bool negative = false;  // integer sign
-  bool hex = false;       // integer written as 0x...
-  bool wide = false;      // string written L"..."
-  bool is_ref = false;    // `ref` is meaningful (references and number refs != 0)
-  std::uint64_t magnitude = 0;  // integer |value|
-  double real = 0;              // real (also set for integers, for convenience)
-  std::string_view text;        // decoded string / keyword / reference spelling
-  date d;
-  time_of_day t;
-  revision r;
-  reference ref;                // kind == reference, and number_ref fields
-  schema::ref_mask allowed = 0; // kinds the schema allows a reference to name
-  std::uint32_t path = none;    // kind == epath: index into device::paths
+  std::uint8_t cip = 0;         // CIP type code an integer was read as
+  bool negative : 1 = false;    // integer sign
+  bool hex : 1 = false;         // integer written as 0x...
+  bool wide : 1 = false;        // string written L"..."
+  bool is_ref : 1 = false;      // `ref` is meaningful (references and number refs != 0)
+  schema::ref_mask allowed : 24 = 0;  // kinds the schema allows a reference to name
+  union {
+    std::uint64_t magnitude = 0;  // kind == integer: |value|
+    double real;                  // kind == real (as_real() serves both)
+  };
+  union {
+    reference ref{};     // is_ref: references and number_ref fields
+    date d;              // kind == date
+    time_of_day t;       // kind == time
+    revision r;          // kind == revision
+    std::uint32_t path;  // kind == epath: index into device::paths
+  };
 
   [[nodiscard]] bool ok() const { return state == value_state::ok; }
   [[nodiscard]] bool present() const { return state != value_state::absent; }
@@ -101,12 +108,21 @@ struct value {
   [[nodiscard]] bool is_integer() const { return ok() && kind == value_kind::integer; }
   // Integer value; callers check is_integer() first. Values beyond int64 clamp.
   [[nodiscard]] std::int64_t as_int() const {
+    if (kind == value_kind::real) return 0;
     if (magnitude > 0x7FFFFFFFFFFFFFFFULL) return negative ? INT64_MIN : INT64_MAX;
     const auto m = static_cast<std::int64_t>(magnitude);
     return negative ? -m : m;
   }
-  [[nodiscard]] std::uint64_t as_uint() const { return negative ? 0 : magnitude; }
+  [[nodiscard]] std::uint64_t as_uint() const { return negative || kind == value_kind::real ? 0 : magnitude; }
+  // Numeric value of an integer or a real.
+  [[nodiscard]] double as_real() const {
+    if (kind == value_kind::real) return real;
+    return negative ? -static_cast<double>(magnitude) : static_cast<double>(magnitude);
+  }
   [[nodiscard]] const reference* as_ref() const { return ok() && is_ref ? &ref : nullptr; }
 };
+
+static_assert(sizeof(value) == 64, "a ParamN holds 24 values: keep them small");
+static_assert(static_cast<unsigned>(schema::ref_kind::count_) <= 24, "value::allowed holds 24 kinds");
 
 }  // namespace edsc::model

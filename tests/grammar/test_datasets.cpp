@@ -83,10 +83,10 @@ TEST(Datasets, NestingUpToTheLimitIsAccepted) {
   EXPECT_TRUE(p.diags().empty());
   const cst::field* f = &p.field("A", 0);
   for (unsigned depth = 1; depth < n; ++depth) {
-    ASSERT_EQ(f->children_count, 1u);
+    ASSERT_EQ(f->children_count(), 1u);
     f = &p.tree().child_of(*f, 0);
   }
-  ASSERT_EQ(f->children_count, 1u);
+  ASSERT_EQ(f->children_count(), 1u);
   EXPECT_EQ(p.text(p.tree().child_of(*f, 0).where), "1");
 }
 

@@ -56,7 +56,9 @@ TEST_P(LineEndings, AreOneNewlineTokenEachAndCountOneLine) {
   EXPECT_EQ(p.keywords(), (strings{"A", "B", "C"}));
   EXPECT_EQ(p.count(token_kind::newline), 5u);
   for (const auto& t : p.tree().tokens) {
-    if (t.kind == token_kind::newline) EXPECT_EQ(p.tree().text(t), nl);
+    if (t.kind == token_kind::newline) {
+      EXPECT_EQ(p.tree().text(t), nl);
+    }
   }
   EXPECT_EQ(p.diag_list(), strings{"syntax-missing-semicolon@4:6"});
 }

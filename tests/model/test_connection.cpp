@@ -94,7 +94,7 @@ TEST(Connection, PortCapacityModular) {
   ASSERT_EQ(d.cap.tspecs.size(), 1u);
   EXPECT_EQ(d.cap.tspecs[0].rate.as_uint(), 4000u);
   ASSERT_NE(d.cap.find("ConnOverhead"), nullptr);
-  EXPECT_DOUBLE_EQ(d.cap.find("ConnOverhead")->fields[0].real, 0.004);
+  EXPECT_DOUBLE_EQ(d.cap.find("ConnOverhead")->fields[0].as_real(), 0.004);
   EXPECT_EQ(d.cap.find("MaxIOConnections")->fields[0].as_uint(), 16u);
   EXPECT_EQ(d.mod.width.as_uint(), 1u);
   ASSERT_EQ(d.mod.racks.size(), 1u);

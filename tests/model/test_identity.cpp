@@ -33,11 +33,11 @@ TEST(Identity, TypedValuesAndInvalidMarkers) {
   const auto& f = l->dev.file;
   ASSERT_TRUE(f.desc_text.ok());
   EXPECT_EQ(f.desc_text.text, "A \"quoted\" file");
-  EXPECT_EQ(f.desc_text.raw, "\"A \\\"quoted\\\" file\"");  // original spelling kept
+  EXPECT_EQ(l->dev.raw(f.desc_text), "\"A \\\"quoted\\\" file\"");  // original spelling kept
 
   ASSERT_TRUE(f.create_date.invalid());
   EXPECT_EQ(f.create_date.why, invalid_reason::bad_date);
-  EXPECT_EQ(f.create_date.raw, "13-45-2020");
+  EXPECT_EQ(l->dev.raw(f.create_date), "13-45-2020");
   EXPECT_EQ(test::at(*l, f.create_date), "13-45-2020");  // origin points at the field
   EXPECT_EQ(f.create_date.from.field, 0u);
 
@@ -55,7 +55,7 @@ TEST(Identity, TypedValuesAndInvalidMarkers) {
   EXPECT_EQ(d.prod_code.why, invalid_reason::out_of_range);
   ASSERT_TRUE(d.maj_rev.invalid());
   EXPECT_EQ(d.maj_rev.why, invalid_reason::out_of_range);
-  EXPECT_EQ(d.maj_rev.raw, "300");
+  EXPECT_EQ(l->dev.raw(d.maj_rev), "300");
   EXPECT_TRUE(d.min_rev.ok());  // keywords match case-insensitively
   EXPECT_EQ(l->src->text(l->parsed.tree.entries[d.min_rev.from.entry].keyword), "minrev");
   ASSERT_TRUE(d.icon_contents.ok());

@@ -69,7 +69,7 @@ TEST(Params, FieldsTypedByTheParametersOwnDataType) {
   const auto& p4 = d.params[4];
   EXPECT_EQ(p4.type, nullptr);
   EXPECT_EQ(p4.min.why, invalid_reason::unknown_type);
-  EXPECT_EQ(p4.min.raw, "1");
+  EXPECT_EQ(l->dev.raw(p4.min), "1");
 }
 
 TEST(Params, EnumsTypedByTheirParameter) {
