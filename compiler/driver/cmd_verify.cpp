@@ -71,7 +71,7 @@ int run_verify(const verify_cli& cli) {
   }
   const auto conv = verify::decode(log);
   const std::optional<unsigned> mac = cli.mac >= 0 ? std::optional<unsigned>(cli.mac) : std::nullopt;
-  auto result = verify::compare(*capture, log, conv, eds->dev, *eds->source, mac);
+  auto result = verify::compare(log, conv, eds->dev, *eds->source, mac);
   for (const auto& e : result.eds_errors) print_error(fmt::format("{}: {}", cli.eds, e));
   if (!result.eds_errors.empty()) return exit_failure;
 

@@ -16,9 +16,8 @@ constexpr std::uint8_t type_choice[] = {choice_poll, choice_strobe, choice_cos, 
 
 class comparer {
  public:
-  comparer(const source_file& capture, const can_log& log, const conversation& conv, const model::device& dev,
-           const source_file& eds)
-      : capture_(capture), log_(log), conv_(conv), dev_(dev), eds_(eds) {}
+  comparer(const can_log& log, const conversation& conv, const model::device& dev, const source_file& eds)
+      : log_(log), conv_(conv), dev_(dev), eds_(eds) {}
 
   verify_result run(std::optional<unsigned> only) {
     std::vector<emit::header_issue> issues;
@@ -238,7 +237,6 @@ class comparer {
       if (v.second > 0) result_.diags[v.first].message += fmt::format(" (and {} more frames like it)", v.second);
   }
 
-  const source_file& capture_;
   const can_log& log_;
   const conversation& conv_;
   const model::device& dev_;
@@ -250,9 +248,9 @@ class comparer {
 
 }  // namespace
 
-verify_result compare(const source_file& capture, const can_log& log, const conversation& conv,
+verify_result compare(const can_log& log, const conversation& conv,
                       const model::device& dev, const source_file& eds, std::optional<unsigned> mac) {
-  return comparer(capture, log, conv, dev, eds).run(mac);
+  return comparer(log, conv, dev, eds).run(mac);
 }
 
 }  // namespace edsc::verify

@@ -19,7 +19,7 @@ struct verify_result {
   std::vector<std::string> eds_errors;  // the EDS lacks what the comparison needs
 };
 
-[[nodiscard]] verify_result compare(const source_file& capture, const can_log& log, const conversation& conv,
+[[nodiscard]] verify_result compare(const can_log& log, const conversation& conv,
                                     const model::device& dev, const source_file& eds, std::optional<unsigned> mac);
 
 }  // namespace edsc::verify

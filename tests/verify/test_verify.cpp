@@ -27,7 +27,7 @@ edsc::diagnostics verify_text(const fs::path& eds, const std::string& capture) {
   const edsc::source_file cap("capture.log", capture);
   const auto log = edsc::verify::read_can_log(cap.text());
   const auto conv = edsc::verify::decode(log);
-  auto r = edsc::verify::compare(cap, log, conv, a->dev, *a->source, std::nullopt);
+  auto r = edsc::verify::compare(log, conv, a->dev, *a->source, std::nullopt);
   EXPECT_TRUE(r.eds_errors.empty());
   return r.diags;
 }
