@@ -86,7 +86,7 @@ void check_member_widths(const check_context& ctx, const model::assembly& a) {
     if (!m.size.is_integer()) continue;
     const auto bits = m.size.as_uint();
     const auto* r = m.ref.as_ref();
-    if (r == nullptr || !r->resolved() || r->bit != model::none) continue;  // `Param10:3` is one bit by design
+    if (r == nullptr || !r->resolved() || r->has_bit()) continue;  // `Param10:3` is one bit by design
     if (const auto* inner = target_assembly(ctx, m.ref)) {
       const auto inner_bytes = assembly_bytes(*inner);
       if (inner_bytes && bits != 8 * *inner_bytes) {

@@ -181,7 +181,7 @@ json writer::value(const model::value& v) const {
       return j;
     case value_kind::reference:
       j["ref"] = ref_name(v.ref);
-      if (v.ref.bit != model::none) j["bit"] = v.ref.bit;
+      if (v.ref.has_bit()) j["bit"] = static_cast<std::uint32_t>(v.ref.bit);
       j["resolved"] = v.ref.resolved();
       return j;
     case value_kind::dataset:

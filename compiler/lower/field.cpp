@@ -67,12 +67,17 @@ bool try_integer(std::string_view s, std::uint8_t cip, value& v) {
 bool try_reference(std::string_view s, schema::ref_mask refs, value& v) {
   // Rockwell files address one bit of a parameter in assembly members: `Param10:0`.
   std::string_view name = s;
-  std::uint32_t bit = model::none;
+  std::uint32_t bit = model::reference::no_bit;
   if (const auto colon = s.find(':'); colon != std::string_view::npos) {
-    if (!schema::parse_u32(s.substr(colon + 1), bit)) return false;
+    if (!schema::parse_u32(s.substr(colon + 1), bit) || bit >= model::reference::no_bit) return false;
     name = s.substr(0, colon);
   }
-  if (refs == 0 || !schema::parse_reference(name, refs, v.ref.kind, v.ref.number)) return false;
+  schema::ref_kind kind{};
+  std::uint32_t number = 0;
+  if (refs == 0 || !schema::parse_reference(name, refs, kind, number)) return false;
+  v.ref = model::reference{};
+  v.ref.kind = kind;
+  v.ref.number = number;
   v.ref.bit = bit;
   v.kind = value_kind::reference;
   v.is_ref = true;
@@ -154,11 +159,11 @@ void lower_bare(std::string_view s, const schema::field_desc& d, value& v) {
 
 model::origin context::origin_of(std::uint32_t entry, std::uint32_t index) const {
   const auto& e = tree.entries[entry];
-  if (index == model::none) return {entry, index, e.where};  // the entry as a whole
-  if (index < e.fields_count) return {entry, index, tree.field_of(e, index).where};
+  if (index == model::none) return {entry, e.where};  // the entry as a whole
+  if (index < e.fields_count) return {entry, tree.field_of(e, index).where};
   // Past the end: a zero-width span at the end of the last field (or the keyword).
   const std::uint32_t at = e.fields_count ? tree.field_of(e, e.fields_count - 1).where.end : e.keyword.end;
-  return {entry, index, span{at, at}};
+  return {entry, span{at, at}};
 }
 
 value context::field(std::uint32_t entry, std::uint32_t index, const schema::field_desc* desc) {

@@ -56,7 +56,7 @@ bool read_number(const std::vector<item>& it, std::size_t at, std::size_t bytes,
   for (std::size_t k = 0; k < bytes; ++k) {
     if (it[at + k].is_param) {
       seg.has_param = true;
-      seg.param = reference{schema::ref_kind::param, it[at + k].param, none};
+      seg.param = reference{.number = it[at + k].param, .target = none};
     }
     v |= static_cast<std::uint32_t>(it[at + k].byte) << (8 * k);
   }
@@ -111,7 +111,7 @@ void segments(const std::vector<item>& it, bool packed, model::epath& out, std::
     if (it[i].is_param) {
       seg.kind = segment_kind::param;
       seg.has_param = true;
-      seg.param = reference{schema::ref_kind::param, it[i].param, none};
+      seg.param = reference{.number = it[i].param, .target = none};
       out.segments.push_back(seg);
       ++i;
       continue;

@@ -9,12 +9,11 @@ namespace edsc::model {
 
 inline constexpr std::uint32_t none = 0xFFFFFFFFu;
 
-// Where a model value or entity came from: the CST entry, the 0-based field
-// index within it (none for the entry as a whole) and the exact bytes, so a
-// diagnostic can point at the field rather than the line.
+// Where a model value or entity came from: the CST entry and the exact bytes
+// (the field, or the whole entry), so a diagnostic can point at the field
+// rather than the line.
 struct origin {
   std::uint32_t entry = none;
-  std::uint32_t field = none;
   span where;
 };
 
@@ -65,41 +64,44 @@ struct revision {
 // holding that kind (device::params for ParamN, device::assemblies for
 // AssemN...), none when nothing of that kind and number exists.
 struct reference {
-  schema::ref_kind kind = schema::ref_kind::param;
+  static constexpr std::uint32_t no_bit = 0xFFFFFF;
   std::uint32_t number = 0;
   std::uint32_t target = none;
-  std::uint32_t bit = none;  // `Param10:3` names bit 3 of Param10 (assembly members)
+  schema::ref_kind kind : 8 = schema::ref_kind::param;
+  std::uint32_t bit : 24 = no_bit;  // `Param10:3` names bit 3 of Param10 (assembly members)
   [[nodiscard]] bool resolved() const { return target != none; }
+  [[nodiscard]] bool has_bit() const { return bit != no_bit; }
 };
+static_assert(sizeof(reference) == 12);
 
 // One field, typed by its schema. Small and copyable; text points into the
 // source or into device::strings, both of which outlive the model. A ParamN
 // holds 24 of these and the model is most of edsc's memory, so a value is
-// 64 bytes: members that belong to one kind share storage (the unions below,
+// 56 bytes: members that belong to one kind share storage (the unions below,
 // read only after checking `kind`), flags are bits, and the field as written
 // is not stored but read back from the source through `from.where` (raw()).
 struct value {
   origin from;
-  std::string_view text;  // decoded string / keyword / reference spelling
   value_state state = value_state::absent;
   value_kind kind = value_kind::none;
   invalid_reason why = invalid_reason::none;
-  std::uint8_t cip = 0;         // CIP type code an integer was read as
+  std::uint8_t cip = 0;   // CIP type code an integer was read as
+  std::string_view text;  // decoded string / keyword / reference spelling
   bool negative : 1 = false;    // integer sign
   bool hex : 1 = false;         // integer written as 0x...
   bool wide : 1 = false;        // string written L"..."
   bool is_ref : 1 = false;      // `ref` is meaningful (references and number refs != 0)
   schema::ref_mask allowed : 24 = 0;  // kinds the schema allows a reference to name
   union {
-    std::uint64_t magnitude = 0;  // kind == integer: |value|
-    double real;                  // kind == real (as_real() serves both)
-  };
-  union {
     reference ref{};     // is_ref: references and number_ref fields
     date d;              // kind == date
     time_of_day t;       // kind == time
     revision r;          // kind == revision
     std::uint32_t path;  // kind == epath: index into device::paths
+  };
+  union {
+    std::uint64_t magnitude = 0;  // kind == integer: |value|
+    double real;                  // kind == real (as_real() serves both)
   };
 
   [[nodiscard]] bool ok() const { return state == value_state::ok; }
@@ -122,7 +124,7 @@ struct value {
   [[nodiscard]] const reference* as_ref() const { return ok() && is_ref ? &ref : nullptr; }
 };
 
-static_assert(sizeof(value) == 64, "a ParamN holds 24 values: keep them small");
+static_assert(sizeof(value) == 56, "a ParamN holds 24 values: keep them small");
 static_assert(static_cast<unsigned>(schema::ref_kind::count_) <= 24, "value::allowed holds 24 kinds");
 
 }  // namespace edsc::model

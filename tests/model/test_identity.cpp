@@ -39,7 +39,7 @@ TEST(Identity, TypedValuesAndInvalidMarkers) {
   EXPECT_EQ(f.create_date.why, invalid_reason::bad_date);
   EXPECT_EQ(l->dev.raw(f.create_date), "13-45-2020");
   EXPECT_EQ(test::at(*l, f.create_date), "13-45-2020");  // origin points at the field
-  EXPECT_EQ(f.create_date.from.field, 0u);
+  EXPECT_EQ(f.create_date.from.entry, l->parsed.tree.sections[0].entries_begin + 1);  // CreateDate
 
   ASSERT_TRUE(f.create_time.ok());
   EXPECT_EQ(f.create_time.t.hour, 9);
@@ -129,7 +129,7 @@ TEST(Identity, EntityOriginsPointAtTheKeyword) {
   auto l = test::lower_text("[Params]\n  Param7 =\n    0, , , 0, 0xC6, 1, \"n\", \"\", \"\", 0, 1, 0;\n");
   ASSERT_EQ(l->dev.params.size(), 1u);
   const auto& o = l->dev.params[0].from;
-  EXPECT_EQ(o.field, model::none);
+  EXPECT_EQ(o.where, l->parsed.tree.entries[o.entry].where);  // the whole entry
   EXPECT_EQ(l->src->position(o.where.begin).line, 2u);
   EXPECT_EQ(l->src->text(o.where).substr(0, 6), "Param7");
 }

@@ -43,7 +43,6 @@ TEST(Params, FieldsTypedByTheParametersOwnDataType) {
   ASSERT_TRUE(p1.default_value.invalid());  // 70000 is not a UINT
   EXPECT_EQ(p1.default_value.why, invalid_reason::out_of_range);
   EXPECT_EQ(test::at(*l, p1.default_value), "70000");
-  EXPECT_EQ(p1.default_value.from.field, 11u);
   EXPECT_EQ(p1.scaling_offset.as_int(), -63);
   ASSERT_NE(p1.multiplier_link.as_ref(), nullptr);
   EXPECT_EQ(p1.multiplier_link.ref.target, 1u);  // Param2
