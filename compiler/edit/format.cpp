@@ -155,7 +155,11 @@ std::optional<std::string> format(const cst::tree& t, const format_options& opti
     if (!out.empty()) out += eol;
     bool lead_first = true;
     put_notes(out, so.leading, "", eol, lead_first);
-    append_with_comment(out, "[" + detail::canonical_section(t.text(so.s->name)) + "]", so.header_comment);
+    // Built by appending: GCC 12 warns falsely (-Wrestrict) on "[" + std::string&&.
+    std::string header = "[";
+    header += detail::canonical_section(t.text(so.s->name));
+    header += ']';
+    append_with_comment(out, header, so.header_comment);
     out += eol;
     bool in_section_first = true;
     for (const auto& eo : so.entries) {

@@ -94,7 +94,9 @@ void replay_capture(const fs::path& eds, const std::map<int, std::pair<std::stri
     const auto expected = it == deviations.end() ? s.answers[0].text() : it->second.first;
     EXPECT_EQ(answers[i][0], expected) << "step " << s.step << " (" << s.request.text() << ")"
                                        << (it == deviations.end() ? "" : ": " + it->second.second);
-    if (it != deviations.end()) EXPECT_NE(expected, s.answers[0].text()) << "step " << s.step << " now matches";
+    if (it != deviations.end()) {
+      EXPECT_NE(expected, s.answers[0].text()) << "step " << s.step << " now matches";
+    }
   }
 }
 
