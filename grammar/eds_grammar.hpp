@@ -41,102 +41,85 @@ inline constexpr unsigned max_nesting = 16;
 // parsing spends most of its time there, and the lookaheads scan trivia twice.
 // Each accepts exactly the language given in its comment. None crosses a line
 // end, so they bump the input within the line.
-template <bool (*Stop)(const char* p, const char* end), bool NonEmpty>
-struct scan_run {
-  using rule_t = scan_run;
-  using subs_t = pg::empty_list;
-  template <typename ParseInput>
-  [[nodiscard]] static bool match(ParseInput& in) noexcept {
-    const char* const begin = in.current();
-    const char* const end = in.end();
-    const char* p = begin;
-    while (p != end && !Stop(p, end)) ++p;
-    if (NonEmpty && p == begin) return false;
-    in.bump_in_this_line(static_cast<std::size_t>(p - begin));
-    return true;
-  }
-};
-
 constexpr bool is_line_end(char c) { return c == '\r' || c == '\n'; }
-constexpr bool stop_blank(const char* p, const char*) { return *p != ' ' && *p != '\t'; }
 
 // Blank runs are long (indentation, padding before aligned comments): spaces
 // are skipped eight at a time, tabs and the tail byte by byte.
-struct blank_run {
-  using rule_t = blank_run;
-  using subs_t = pg::empty_list;
-  template <typename ParseInput>
-  [[nodiscard]] static bool match(ParseInput& in) noexcept {
-    const char* const begin = in.current();
-    const char* const end = in.end();
-    const char* p = begin;
-    for (;;) {
-      while (std::endian::native == std::endian::little && end - p >= 8) {
-        std::uint64_t word;
-        std::memcpy(&word, p, 8);
-        const std::uint64_t diff = word ^ 0x2020202020202020ull;  // zero bytes are spaces
-        if (diff != 0) {
-          p += std::countr_zero(diff) / 8;  // little-endian: first non-space byte
-          break;
-        }
-        p += 8;
+inline std::size_t blank_length(const char* const begin, const char* const end) noexcept {
+  const char* p = begin;
+  for (;;) {
+    while (std::endian::native == std::endian::little && end - p >= 8) {
+      std::uint64_t word;
+      std::memcpy(&word, p, 8);
+      const std::uint64_t diff = word ^ 0x2020202020202020ull;  // zero bytes are spaces
+      if (diff != 0) {
+        p += std::countr_zero(diff) / 8;  // little-endian: first non-space byte
+        break;
       }
-      if (p == end || (*p != ' ' && *p != '\t')) break;
-      ++p;
+      p += 8;
     }
-    if (p == begin) return false;
-    in.bump_in_this_line(static_cast<std::size_t>(p - begin));
-    return true;
+    if (p == end || (*p != ' ' && *p != '\t')) break;
+    ++p;
   }
-};
+  return static_cast<std::size_t>(p - begin);
+}
 
 // Comment text runs to the line end: two vectorised searches.
-struct comment_text {
-  using rule_t = comment_text;
-  using subs_t = pg::empty_list;
-  template <typename ParseInput>
-  [[nodiscard]] static bool match(ParseInput& in) noexcept {
-    const char* const begin = in.current();
-    const auto size = static_cast<std::size_t>(in.end() - begin);
-    const void* lf = std::memchr(begin, '\n', size);
-    const auto upto = lf ? static_cast<std::size_t>(static_cast<const char*>(lf) - begin) : size;
-    const void* cr = std::memchr(begin, '\r', upto);
-    const auto n = cr ? static_cast<std::size_t>(static_cast<const char*>(cr) - begin) : upto;
-    in.bump_in_this_line(n);
-    return true;
-  }
-};
-constexpr bool stop_bare(const char* p, const char*) {
-  switch (*p) {
+inline std::size_t comment_text_length(const char* const begin, const char* const end) noexcept {
+  const auto size = static_cast<std::size_t>(end - begin);
+  const void* lf = std::memchr(begin, '\n', size);
+  const auto upto = lf ? static_cast<std::size_t>(static_cast<const char*>(lf) - begin) : size;
+  const void* cr = std::memchr(begin, '\r', upto);
+  return cr ? static_cast<std::size_t>(static_cast<const char*>(cr) - begin) : upto;
+}
+
+constexpr bool stop_bare(char c) {
+  switch (c) {
     case ',': case ';': case '"': case '{': case '}': case '$': case ' ': case '\t':
     case '\r': case '\n': case '=': case '[': case ']': return true;
     default: return false;
   }
 }
+inline std::size_t bare_length(const char* const begin, const char* const end) noexcept {
+  const char* p = begin;
+  while (p != end && !stop_bare(*p)) ++p;
+  return static_cast<std::size_t>(p - begin);
+}
+
 // Inside a string: an escape (`\` then any byte but a line end) is two bytes;
 // a `\` before a line end or the end of input stops the run, as do `"` and
 // the line end itself.
-struct string_chars {
-  using rule_t = string_chars;
+inline std::size_t string_chars_length(const char* const begin, const char* const end) noexcept {
+  const char* p = begin;
+  while (p != end) {
+    const char c = *p;
+    if (c == '"' || is_line_end(c)) break;
+    if (c == '\\') {
+      if (p + 1 == end || is_line_end(p[1])) break;
+      ++p;
+    }
+    ++p;
+  }
+  return static_cast<std::size_t>(p - begin);
+}
+
+// A rule made of one of the scanners above; NonEmpty: fails on zero bytes.
+template <std::size_t (*Length)(const char*, const char*) noexcept, bool NonEmpty>
+struct line_scan {
+  using rule_t = line_scan;
   using subs_t = pg::empty_list;
   template <typename ParseInput>
   [[nodiscard]] static bool match(ParseInput& in) noexcept {
-    const char* const begin = in.current();
-    const char* const end = in.end();
-    const char* p = begin;
-    while (p != end) {
-      const char c = *p;
-      if (c == '"' || is_line_end(c)) break;
-      if (c == '\\') {
-        if (p + 1 == end || is_line_end(p[1])) break;
-        ++p;
-      }
-      ++p;
-    }
-    in.bump_in_this_line(static_cast<std::size_t>(p - begin));
+    const std::size_t n = Length(in.current(), in.end());
+    if (NonEmpty && n == 0) return false;
+    in.bump_in_this_line(n);
     return true;
   }
 };
+
+struct blank_run : line_scan<blank_length, true> {};
+struct comment_text : line_scan<comment_text_length, false> {};
+struct string_chars : line_scan<string_chars_length, false> {};
 
 // ---- trivia -------------------------------------------------------------------
 // plus<one<' ', '\t'>>
@@ -154,10 +137,7 @@ inline std::size_t trivia_length(const char* const begin, const char* const end)
     if (c == ' ' || c == '\t' || c == '\r' || c == '\n') {
       ++p;
     } else if (c == '$') {
-      const void* lf = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
-      const char* stop = lf ? static_cast<const char*>(lf) : end;
-      const void* cr = std::memchr(p, '\r', static_cast<std::size_t>(stop - p));
-      p = cr ? static_cast<const char*>(cr) : stop;
+      p += comment_text_length(p, end);
     } else {
       break;
     }
@@ -231,7 +211,7 @@ struct bare_char : pg::not_one<',', ';', '"', '{', '}', '$', ' ', '\t', '\r', '\
 // Words separated by single-line blanks stay one value: some tools write
 // unquoted EPATHs (`20 66 24 01`); the validator judges the text.
 // bare_run is plus<bare_char>.
-struct bare_run : scan_run<stop_bare, true> {};
+struct bare_run : line_scan<bare_length, true> {};
 struct bare_gap : blank_run {};  // not `blank`: no trivia token inside a value
 struct bare : pg::seq<bare_run, pg::star<bare_gap, pg::not_at<new_entry_ahead>, bare_run>> {};
 struct lbrace : pg::one<'{'> {};
