@@ -10,23 +10,14 @@
 #include <gtest/gtest.h>
 
 #include "emit/emit_support.hpp"
+#include "emit/responder_support.hpp"
 
 namespace edsc::test {
 
 // The scanner's side of the RightSight start-up, as `0x44C 00 0E ...` lines.
 inline std::vector<std::string> rightsight_requests() {
   std::vector<std::string> out;
-  std::istringstream in(read_text(fs::path(EDSC_CAPTURES_DIR) / "rightsight-42ef-startup.tsv"));
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream cols(line);
-    std::string step, dir, id, data;
-    std::getline(cols, step, '\t');
-    std::getline(cols, dir, '\t');
-    std::getline(cols, id, '\t');
-    std::getline(cols, data);
-    if (dir == "M") out.push_back(id + " " + data);
-  }
+  for (const auto& s : read_capture()) out.push_back(s.request.text());
   return out;
 }
 
@@ -42,29 +33,14 @@ inline std::string candump_line(double time, const std::string& frame) {
 // Builds the responder from `eds` (MAC 9), feeds it `requests` and returns the
 // whole conversation as a candump log: each request, then what the slave sent.
 inline std::string responder_log(const temp_dir& dir, const fs::path& eds, const std::vector<std::string>& requests) {
-  const auto header = dir.path() / "device_eds.h";
-  const auto gen = run_shell(edsc_command() + " header " + quoted(eds) + " -o " + quoted(header) + " --serial 0x500AF52B");
-  EXPECT_EQ(gen.status, 0) << gen.output;
-  const auto src = fs::path(EDSC_TESTS_DIR) / "emit" / "responder";
-  const auto exe = dir.path() / "replay";
-  const auto cc = run_shell("cc -std=c99 -I" + quoted(dir.path()) + " -I" + quoted(src) + " " +
-                            quoted(src / "dn_responder.c") + " " + quoted(src / "replay_main.c") + " -o " + quoted(exe));
-  EXPECT_EQ(cc.status, 0) << cc.output;
-  std::string input;
-  for (const auto& r : requests) input += r + "\n";
-  write_text(dir.path() / "requests.txt", input);
-  const auto run = run_shell(quoted(exe) + " 9 < " + quoted(dir.path() / "requests.txt"));
-  EXPECT_EQ(run.status, 0) << run.output;
+  const auto answers = replay(dir, build_responder(dir, eds), requests);
   std::string log;
   double t = 1699999999.0;
-  std::size_t next = 0;
-  if (!requests.empty()) log += candump_line(t, requests[next++]);
-  std::istringstream lines(run.output);
-  std::string line;
-  while (std::getline(lines, line)) {
-    t += 0.001;
-    if (line != ".") log += candump_line(t, line);
-    else if (next < requests.size()) log += candump_line(t, requests[next++]);
+  for (std::size_t i = 0; i < requests.size(); ++i) {
+    if (i > 0) t += 0.001;  // the slave's end-of-answers line
+    log += candump_line(t, requests[i]);
+    if (i < answers.size())
+      for (const auto& a : answers[i]) log += candump_line(t += 0.001, a);
   }
   return log;
 }
