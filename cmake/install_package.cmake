@@ -11,3 +11,5 @@ install(FILES ${PROJECT_SOURCE_DIR}/cmake/edscConfig.cmake
               ${PROJECT_SOURCE_DIR}/cmake/edscHeader.cmake
               ${CMAKE_CURRENT_BINARY_DIR}/edscConfigVersion.cmake
         DESTINATION ${EDSC_PACKAGE_DIR})
+# The user documentation, where diagnostics' help links point (EDSC_DOCS_URI).
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR})
