@@ -23,7 +23,7 @@ struct fmt_options {
 
 int run_fmt(const fmt_options& opt) {
   if (const int rc = opt.dest.refuse_overwrite(); rc != exit_ok) return rc;
-  const auto input_file = read_or_report(opt.dest.input);
+  const auto input_file = opt.dest.read();
   if (!input_file) return exit_failure;
   const auto& src = *input_file;
   const std::string input(src.text());
@@ -53,7 +53,9 @@ int run_fmt(const fmt_options& opt) {
   }
   if (opt.check) {
     if (*out == input) return exit_ok;
-    write_all(stderr, fmt::format("{}: not formatted (edsc fmt --in-place {} formats it)\n", src.path(), src.path()));
+    write_all(stderr, io::is_stdin(opt.dest.input)
+                          ? fmt::format("{}: not formatted\n", src.path())
+                          : fmt::format("{}: not formatted (edsc fmt --in-place {} formats it)\n", src.path(), src.path()));
     return exit_findings;
   }
   return opt.dest.write(*out);

@@ -3,6 +3,8 @@
 #include <cstdlib>
 #include <map>
 
+#include <fmt/format.h>
+
 #include <unistd.h>
 
 #include "io/read_file.hpp"
@@ -43,8 +45,19 @@ void add_report_options(CLI::App* cmd, color_mode& color, report_format& format,
       ->allow_extra_args(false);
 }
 
-std::unique_ptr<source_file> read_or_report(const std::string& path) {
-  auto read = io::read_source(path);
+void add_stdin_filename(CLI::App* cmd, std::string& name) {
+  cmd->add_option("--stdin-filename", name, "Name standard input ('-') this way in diagnostics (default: <stdin>)");
+}
+
+bool stdin_filename_used(bool reads_stdin, const std::string& name) {
+  if (reads_stdin || name.empty()) return true;
+  print_error(fmt::format("--stdin-filename {} names standard input, but no input is '-'", name));
+  return false;
+}
+
+std::unique_ptr<source_file> read_or_report(const std::string& path, const std::string& stdin_name) {
+  auto read = io::is_stdin(path) ? io::read_stdin(stdin_name)
+                                 : io::read_source(path);
   if (auto* err = std::get_if<io::io_error>(&read)) {
     print_error(err->message);
     return nullptr;

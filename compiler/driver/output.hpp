@@ -25,7 +25,16 @@ void print_error(std::string_view message);  // "edsc: error: ..." on stderr
 void add_report_options(CLI::App* cmd, color_mode& color, report_format& format,
                         std::vector<std::string>& warning_flags);
 
-// Reads an input file; on failure prints why and returns null.
-[[nodiscard]] std::unique_ptr<source_file> read_or_report(const std::string& path);
+// --stdin-filename NAME: what diagnostics call standard input (`-`), as
+// formatters let editors say which file the piped text belongs to.
+void add_stdin_filename(CLI::App* cmd, std::string& name);
+// A --stdin-filename without `-` among the inputs is a usage error: prints
+// why and returns false.
+[[nodiscard]] bool stdin_filename_used(bool reads_stdin, const std::string& name);
+
+// Reads an input file, or standard input for `-` (named `stdin_name`, else
+// `<stdin>`); on failure prints why and returns null.
+[[nodiscard]] std::unique_ptr<source_file> read_or_report(const std::string& path,
+                                                          const std::string& stdin_name = {});
 
 }  // namespace edsc::driver
