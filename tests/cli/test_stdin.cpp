@@ -159,4 +159,16 @@ TEST_F(Cli, FmtNamesStandardInputInSyntaxErrors) {
   EXPECT_NE(r.output.find("x.eds: not formatted"), std::string::npos) << r.output;
 }
 
+TEST_F(Cli, FixAndEditReadStandardInput) {
+  const auto path = file("broken.eds", broken_eds()).string();
+  const auto named = run_edsc({"fix", path});
+  const auto piped = run_edsc({"fix", "-"}, broken_eds());
+  EXPECT_EQ(piped.status, named.status) << piped.output;
+  EXPECT_EQ(piped.output, renamed(named.output, path, "<stdin>"));
+  // An edit without operations gives the bytes back unchanged.
+  const auto edit = run_edsc({"edit", "--force", "-"}, broken_eds());
+  EXPECT_EQ(edit.status, 0) << edit.output;
+  EXPECT_NE(edit.output.find(broken_eds()), std::string::npos);
+}
+
 }  // namespace
