@@ -11,6 +11,7 @@
 
 #include "check/check_file.hpp"
 #include "diag/render_text.hpp"
+#include "driver/choice.hpp"
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
 #include "io/collect_inputs.hpp"
@@ -172,12 +173,11 @@ void register_check(CLI::App& app, command_action& run) {
   add_stdin_filename(cmd, cli->stdin_name);
   add_report_options(cmd, cli->color, cli->format, cli->warning_flags);
   cmd->add_option("--max-errors", cli->max_errors, "Show at most N errors (0: all)");
-  const std::map<std::string, std::uint8_t> networks{{"devicenet", model::net_devicenet},
-                                                      {"ethernetip", model::net_ethernetip},
-                                                      {"controlnet", model::net_controlnet}};
-  cmd->add_option("--network", cli->networks,
-                  "Check as this network (devicenet, ethernetip, controlnet) instead of detecting it")
-      ->transform(CLI::CheckedTransformer(networks, CLI::ignore_case));
+  add_choice(cmd, "--network", cli->networks,
+             {{"devicenet", std::uint8_t{model::net_devicenet}},
+              {"ethernetip", std::uint8_t{model::net_ethernetip}},
+              {"controlnet", std::uint8_t{model::net_controlnet}}},
+             "Check as this network instead of detecting it");
   cmd->add_option("-j,--jobs", cli->jobs, "Files checked in parallel (default: one per core)");
   cmd->callback([&run, cli] { run = [cli] { return run_check(*cli); }; });
 }

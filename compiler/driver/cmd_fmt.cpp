@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "diag/render_text.hpp"
+#include "driver/choice.hpp"
 #include "driver/commands.hpp"
 #include "driver/destination.hpp"
 #include "driver/output.hpp"
@@ -68,8 +69,7 @@ void register_fmt(CLI::App& app, command_action& run) {
   auto* cmd = app.add_subcommand("fmt", "Lay an EDS file out canonically without changing its meaning");
   opt->dest.add_options(*cmd, "The EDS file to format");
   cmd->add_flag("--check", opt->check, "Write nothing; exit 1 when the file is not formatted (for CI)");
-  cmd->add_option("--eol", opt->eol, "Line endings of the output: lf or crlf (default: keep the file's)")
-      ->check(CLI::IsMember({"lf", "crlf"}));
+  add_choice(cmd, "--eol", opt->eol, {"lf", "crlf"}, "Line endings of the output (default: keep the file's)");
   cmd->callback([&run, opt] { run = [opt] { return run_fmt(*opt); }; });
 }
 
