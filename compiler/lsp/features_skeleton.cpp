@@ -5,9 +5,6 @@
 namespace edsc::lsp {
 
 std::optional<hover_info> hover(const analysis&, std::uint32_t) { return std::nullopt; }
-std::vector<span> definition(const analysis&, std::uint32_t) { return {}; }
-std::vector<span> references(const analysis&, std::uint32_t, bool) { return {}; }
-std::vector<symbol> document_symbols(const analysis&) { return {}; }
 std::vector<completion_item> complete(const analysis&, std::uint32_t) { return {}; }
 std::optional<span> prepare_rename(const analysis&, std::uint32_t) { return std::nullopt; }
 rename_result rename(const analysis&, std::uint32_t, std::string_view) { return {}; }
