@@ -8,8 +8,7 @@
 namespace edsc::lsp {
 
 std::vector<span> definition(const analysis& a, std::uint32_t offset) {
-  const ref_index idx(a);
-  const auto* s = idx.at(offset);
+  const auto s = site_at(a, offset);
   if (!s) return {};
   if (auto d = declaration_of(a, s->kind, s->number)) return {*d};
   return {};

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "lsp/locate.hpp"
-#include "model/visit.hpp"
+#include "model/decode.hpp"
 #include "schema/text.hpp"
 
 namespace edsc::lsp {
@@ -29,31 +29,14 @@ bool read_name(std::string_view text, std::uint32_t at, span& name, span& digits
   return true;
 }
 
-void add_value_sites(const analysis& a, const model::value& v, std::vector<ref_site>& out) {
-  const auto text = a.text();
-  if (const auto* r = v.as_ref()) {
-    ref_site s;
-    s.number = r->number;
-    s.kind = r->kind;
-    s.entry = v.from.entry;
-    if (v.kind == model::value_kind::reference) {
-      if (!read_name(text, v.from.where.begin, s.name, s.digits)) return;
-    } else {  // a number reference: the whole field is the number
-      s.name = s.digits = v.from.where;
-    }
-    out.push_back(s);
-    return;
-  }
-  if (v.kind != model::value_kind::epath || !v.ok()) return;
-  // `[ParamN]` placeholders inside the quoted bytes.
-  const auto& p = a.dev.paths[v.path];
-  if (std::none_of(p.segments.begin(), p.segments.end(), [](const auto& s) { return s.has_param; })) return;
-  for (auto i = v.from.where.begin; i < v.from.where.end; ++i) {
+// `[ParamN]` placeholders inside a quoted EPATH.
+void placeholder_sites(std::string_view text, span where, std::uint32_t entry, std::vector<ref_site>& out) {
+  for (auto i = where.begin; i < where.end; ++i) {
     if (text[i] != '[') continue;
     ref_site s;
-    s.entry = v.from.entry;
+    s.entry = entry;
     ref_kind k{};
-    if (read_name(text, i + 1, s.name, s.digits) && s.name.end < v.from.where.end && text[s.name.end] == ']' &&
+    if (read_name(text, i + 1, s.name, s.digits) && s.name.end < where.end && text[s.name.end] == ']' &&
         schema::parse_reference(text.substr(s.name.begin, s.name.size()), schema::bit(ref_kind::param), k, s.number)) {
       s.kind = k;
       out.push_back(s);
@@ -61,6 +44,73 @@ void add_value_sites(const analysis& a, const model::value& v, std::vector<ref_s
   }
 }
 
+// A field the schema says may name an entry, read as lowering reads it.
+void field_sites(const analysis& a, const cst::field& f, const schema::field_desc& d, std::uint32_t entry,
+                 std::vector<ref_site>& out) {
+  using schema::value_type;
+  const auto text = a.text();
+  const auto raw = text.substr(f.where.begin, f.where.size());
+  if (f.kind == cst::field_kind::string) {
+    if (d.type == value_type::epath || d.type == value_type::member) placeholder_sites(text, f.where, entry, out);
+    return;
+  }
+  if (f.kind != cst::field_kind::bare) return;
+  ref_site s;
+  s.entry = entry;
+  if (d.type == value_type::number_ref) {
+    model::value v;
+    if (!model::decode::integer(raw, v) || v.negative || v.magnitude == 0 || v.magnitude > 0xFFFFFFFFu) return;
+    s.number = static_cast<std::uint32_t>(v.magnitude);
+    // The first allowed kind that has that number, else the first allowed.
+    bool first = true;
+    for (unsigned k = 0; k < static_cast<unsigned>(ref_kind::count_); ++k) {
+      if ((d.refs & (1u << k)) == 0) continue;
+      if (first) s.kind = static_cast<ref_kind>(k), first = false;
+      if (a.dev.find(static_cast<ref_kind>(k), s.number) != model::none) {
+        s.kind = static_cast<ref_kind>(k);
+        break;
+      }
+    }
+    s.name = s.digits = f.where;
+    out.push_back(s);
+    return;
+  }
+  if (d.type != value_type::reference && d.type != value_type::int_or_ref && d.type != value_type::member) return;
+  if (!read_name(text, f.where.begin, s.name, s.digits)) return;
+  // The whole field, or a name followed by `:bit`.
+  if (s.name.end != f.where.end && text[s.name.end] != ':') return;
+  if (!schema::parse_reference(text.substr(s.name.begin, s.name.size()), d.refs, s.kind, s.number)) return;
+  out.push_back(s);
+}
+
+}  // namespace
+
+void entry_sites(const analysis& a, std::uint32_t entry, const schema::section_desc& sd, std::vector<ref_site>& out) {
+  const auto& t = a.tree;
+  const auto& e = t.entries[entry];
+  const auto m = schema::find_keyword(sd, t.text(e.keyword));
+  if (!m.desc) return;
+  if (m.desc->numbered) {
+    ref_site s;
+    s.number = m.number;
+    s.entry = entry;
+    if (read_name(a.text(), e.keyword.begin, s.name, s.digits)) {
+      if (m.desc->id == schema::entry_id::enum_par_n || m.desc->id == schema::entry_id::enum_n) {
+        s.kind = ref_kind::param;  // describes ParamN: renumbered with it
+        out.push_back(s);
+      } else if (defines(*m.desc, s.kind)) {
+        s.declaration = true;
+        out.push_back(s);
+      }
+    }
+  }
+  for (std::uint32_t i = 0; i < e.fields_count; ++i) {
+    const auto* d = schema::field_at(*m.desc, i);
+    if (d && (d->refs != 0 || d->type == schema::value_type::epath)) field_sites(a, t.field_of(e, i), *d, entry, out);
+  }
+}
+
+namespace {
 }  // namespace
 
 bool defines(const schema::keyword_desc& k, ref_kind& kind) {
@@ -74,7 +124,6 @@ bool defines(const schema::keyword_desc& k, ref_kind& kind) {
 
 ref_index::ref_index(const analysis& a) {
   const auto& t = a.tree;
-  // Keywords: definitions, and the entries that belong to a parameter.
   std::uint32_t cached_section = cst::npos;
   const schema::section_desc* sd = nullptr;
   for (std::uint32_t i = 0; i < t.entries.size(); ++i) {
@@ -83,24 +132,20 @@ ref_index::ref_index(const analysis& a) {
       cached_section = e.section;
       sd = section_desc_of(t, e.section);
     }
-    if (!sd) continue;
-    const auto m = schema::find_keyword(*sd, t.text(e.keyword));
-    if (!m.desc || !m.desc->numbered) continue;
-    ref_site s;
-    s.number = m.number;
-    s.entry = i;
-    if (!read_name(a.text(), e.keyword.begin, s.name, s.digits)) continue;
-    if (m.desc->id == schema::entry_id::enum_par_n || m.desc->id == schema::entry_id::enum_n) {
-      s.kind = ref_kind::param;  // describes ParamN: renumbered with it
-    } else if (defines(*m.desc, s.kind)) {
-      s.declaration = true;
-    } else {
-      continue;
-    }
-    sites_.push_back(s);
+    if (sd) entry_sites(a, i, *sd, sites_);
   }
-  model::for_each_value(a.dev, [&](const model::value& v) { add_value_sites(a, v, sites_); });
-  std::sort(sites_.begin(), sites_.end(), [](const ref_site& x, const ref_site& y) { return x.name.begin < y.name.begin; });
+}
+
+std::optional<ref_site> site_at(const analysis& a, std::uint32_t offset) {
+  const auto loc = locate(a.tree, offset);
+  if (loc.entry == cst::npos) return std::nullopt;
+  const auto* sd = section_desc_of(a.tree, a.tree.entries[loc.entry].section);
+  if (!sd) return std::nullopt;
+  std::vector<ref_site> sites;
+  entry_sites(a, loc.entry, *sd, sites);
+  for (const auto& s : sites)
+    if (touches(s.name, offset)) return s;
+  return std::nullopt;
 }
 
 const ref_site* ref_index::at(std::uint32_t offset) const {

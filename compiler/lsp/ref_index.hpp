@@ -3,9 +3,10 @@
 // (`Param5 =`), references in fields (`Param5`, `5` in a number field such
 // as a GroupN member), `[Param5]` inside EPATHs, and the keywords that
 // belong to a parameter (`Enum5` in [Params], `Param5` in [EnumPar]).
-// Built in one pass over the tree and model; navigation, rename and hover
+// Read from the tree by the schema, as lowering reads it; navigation, rename and hover
 // share it.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "check/check_file.hpp"
@@ -35,6 +36,11 @@ class ref_index {
  private:
   std::vector<ref_site> sites_;  // sorted by position
 };
+
+// The site under the cursor, read from its entry alone (no index needed).
+[[nodiscard]] std::optional<ref_site> site_at(const analysis& a, std::uint32_t offset);
+// The sites of one entry, in order: its keyword, then its fields.
+void entry_sites(const analysis& a, std::uint32_t entry, const schema::section_desc& sd, std::vector<ref_site>& out);
 
 // The declaration of (kind, number): the keyword of its first definition,
 // found through the model's index without building a ref_index.
