@@ -12,6 +12,12 @@ json capabilities() {
       {"textDocumentSync", json{{"openClose", true}, {"change", 2}, {"save", json{{"includeText", false}}}}},
       {"codeActionProvider", json{{"codeActionKinds", json::array({"quickfix", "source.fixAll.edsc"})}}},
       {"documentFormattingProvider", true},
+      {"hoverProvider", true},
+      {"definitionProvider", true},
+      {"referencesProvider", true},
+      {"documentSymbolProvider", true},
+      {"completionProvider", json{{"triggerCharacters", json::array({"[", "=", ","})}}},
+      {"renameProvider", json{{"prepareProvider", true}}},
   };
 }
 

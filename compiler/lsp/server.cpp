@@ -29,6 +29,13 @@ const std::unordered_map<std::string_view, method_entry>& methods() {
       {"textDocument/didSave", {nullptr, on_did_save}},
       {"textDocument/codeAction", {on_code_action, nullptr}},
       {"textDocument/formatting", {on_formatting, nullptr}},
+      {"textDocument/hover", {on_hover, nullptr}},
+      {"textDocument/definition", {on_definition, nullptr}},
+      {"textDocument/references", {on_references, nullptr}},
+      {"textDocument/documentSymbol", {on_document_symbol, nullptr}},
+      {"textDocument/completion", {on_completion, nullptr}},
+      {"textDocument/prepareRename", {on_prepare_rename, nullptr}},
+      {"textDocument/rename", {on_rename, nullptr}},
   };
   return table;
 }
