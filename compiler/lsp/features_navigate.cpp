@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include "lsp/features.hpp"
+#include "lsp/describe.hpp"
 #include "lsp/locate.hpp"
 #include "lsp/ref_index.hpp"
 
@@ -47,24 +48,6 @@ int symbol_kind(const schema::keyword_desc* k) {
   }
 }
 
-// The entry's name string, when its schema has a field called `name`.
-std::string name_detail(const cst::tree& t, const cst::entry& e, const schema::keyword_desc* k) {
-  if (!k) return {};
-  for (std::uint32_t i = 0; i < k->fields.size() && i < e.fields_count; ++i) {
-    if (k->fields[i].name != "name" || k->fields[i].type != schema::value_type::string) continue;
-    const auto& f = t.field_of(e, i);
-    if (f.kind != cst::field_kind::string) return {};
-    std::string out;
-    for (std::uint32_t p = 0; p < f.pieces_count(); ++p) {
-      auto piece = t.text(t.piece_of(f, p));
-      if (!piece.empty() && (piece.front() == 'L' || piece.front() == 'l')) piece.remove_prefix(1);
-      if (piece.size() >= 2) out += piece.substr(1, piece.size() - 2);
-    }
-    return out;
-  }
-  return {};
-}
-
 }  // namespace
 
 std::vector<symbol> document_symbols(const analysis& a) {
@@ -86,7 +69,7 @@ std::vector<symbol> document_symbols(const analysis& a) {
       const auto* k = sd ? schema::find_keyword(*sd, t.text(e.keyword)).desc : nullptr;
       symbol child;
       child.name = std::string(t.text(e.keyword));
-      child.detail = name_detail(t, e, k);
+      child.detail = entry_name(t, e, k);
       child.kind = symbol_kind(k);
       child.range = e.where;
       child.selection = e.keyword;

@@ -4,8 +4,6 @@
 
 namespace edsc::lsp {
 
-std::optional<hover_info> hover(const analysis&, std::uint32_t) { return std::nullopt; }
-std::vector<completion_item> complete(const analysis&, std::uint32_t) { return {}; }
 std::optional<span> prepare_rename(const analysis&, std::uint32_t) { return std::nullopt; }
 rename_result rename(const analysis&, std::uint32_t, std::string_view) { return {}; }
 
