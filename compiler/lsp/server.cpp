@@ -123,7 +123,6 @@ void server::dispatch(const incoming& in) {
     case kind::notification: break;
   }
   const bool request = in.what == kind::request;
-  if (in.method == "$/cancelRequest") return;  // every request is answered before the next is read
   const auto& table = methods();
   const auto it = table.find(in.method);
   if (request) {
@@ -153,7 +152,8 @@ void server::dispatch(const incoming& in) {
     return;
   }
   // Notifications: before initialize only exit counts; unknown ones (and
-  // "$/" ones) are dropped as the spec says.
+  // "$/" ones) are dropped as the spec says. $/cancelRequest has nothing to
+  // cancel: every request is answered before the next message is read.
   if (!s_.initialized && in.method != "exit") return;
   if (it == table.end() || !it->second.notify) {
     if (s_.log && in.method.rfind("$/", 0) != 0) s_.log("edsc lsp: ignored notification " + in.method);
