@@ -11,6 +11,11 @@ namespace {
 
 bool has(std::uint64_t v, unsigned b) { return ((v >> b) & 1u) != 0; }
 
+// Appends `w` to a comma-separated list when `on`.
+void add(std::string& s, bool on, std::string_view w) {
+  if (on) s += s.empty() ? std::string(w) : fmt::format(", {}", w);
+}
+
 std::string_view class_words(schema::type_class c) {
   using schema::type_class;
   switch (c) {
@@ -40,9 +45,6 @@ std::string_view real_time_format(unsigned f) {
 
 std::string direction(std::string_view name, const model::direction_params& d) {
   std::string types, prios;
-  auto add = [](std::string& s, bool on, std::string_view w) {
-    if (on) s += s.empty() ? std::string(w) : fmt::format(", {}", w);
-  };
   add(types, d.type_null, "null");
   add(types, d.type_multicast, "multicast");
   add(types, d.type_p2p, "point-to-point");
@@ -68,25 +70,28 @@ std::string other_bits(std::uint64_t v, std::uint64_t known) {
   return out.empty() ? out : "bits " + out;
 }
 
+// One line per set bit of `names`, then any bit beyond them.
+template <std::size_t N>
+std::string bit_lines(std::uint64_t v, const std::string_view (&names)[N], std::string_view others_note,
+                      std::string_view none) {
+  std::string out;
+  for (unsigned b = 0; b < N; ++b)
+    if (has(v, b)) out += fmt::format("- {}\n", names[b]);
+  if (const auto o = other_bits(v, (std::uint64_t{1} << N) - 1); !o.empty()) out += fmt::format("- also {}{}\n", o, others_note);
+  return out.empty() ? std::string(none) : out;
+}
+
 std::string describe_param_descriptor(std::uint64_t v) {
   static constexpr std::string_view names[] = {
       "settable path (bit 0)", "enumerated strings (bit 1)", "scaling (bit 2)", "scaling links (bit 3)",
       "read only (bit 4)", "monitor: read often (bit 5)", "extended precision scaling (bit 6)"};
-  std::string out;
-  for (unsigned b = 0; b < 7; ++b)
-    if (has(v, b)) out += fmt::format("- {}\n", names[b]);
-  if (const auto o = other_bits(v, 0x7F); !o.empty()) out += fmt::format("- also {} (not standard)\n", o);
-  return out.empty() ? "- no bits set: settable, not enumerated, no scaling\n" : out;
+  return bit_lines(v, names, " (not standard)", "- no bits set: settable, not enumerated, no scaling\n");
 }
 
 std::string describe_io_mask(std::uint64_t v) {
   static constexpr std::string_view names[] = {"poll (bit 0)", "bit-strobe (bit 1)", "change of state (bit 2)",
                                                "cyclic (bit 3)", "multicast poll (bit 4, unconfirmed)"};
-  std::string out;
-  for (unsigned b = 0; b < 5; ++b)
-    if (has(v, b)) out += fmt::format("- {}\n", names[b]);
-  if (const auto o = other_bits(v, 0x1F); !o.empty()) out += fmt::format("- also {}\n", o);
-  return out.empty() ? "- no connection type\n" : out;
+  return bit_lines(v, names, "", "- no connection type\n");
 }
 
 std::string describe_trigger(std::uint32_t v) {
@@ -95,9 +100,6 @@ std::string describe_trigger(std::uint32_t v) {
   for (unsigned c = 0; c < 16; ++c)
     if (has(t.transport_classes, c)) classes += fmt::format("{}{}", classes.empty() ? "" : ", ", c);
   std::string triggers;
-  auto add = [](std::string& s, bool on, std::string_view w) {
-    if (on) s += s.empty() ? std::string(w) : fmt::format(", {}", w);
-  };
   add(triggers, t.trigger_cyclic, "cyclic");
   add(triggers, t.trigger_cos, "change of state");
   add(triggers, t.trigger_application, "application");

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "emit/json_values.hpp"
 #include "lsp/describe.hpp"
 #include "lsp/features.hpp"
 #include "lsp/locate.hpp"
@@ -81,8 +82,9 @@ void target_items(const analysis& a, schema::ref_mask allowed, bool as_number, s
     completion_item c;
     const auto name = fmt::format("{}{}", schema::stem_of(k), number);
     c.label = as_number ? std::to_string(number) : name;
-    c.detail = as_number ? fmt::format("{} {}", name, detail) : std::move(detail);
-    c.documentation = std::string(doc);
+    // Names and help texts are often Windows-1252; editors want UTF-8.
+    c.detail = emit::detail::to_utf8(as_number ? fmt::format("{} {}", name, detail) : detail);
+    c.documentation = emit::detail::to_utf8(doc);
     c.kind = kind;
     out.push_back(std::move(c));
   };

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "emit/json_values.hpp"
 #include "lsp/describe.hpp"
 #include "lsp/features.hpp"
 #include "lsp/locate.hpp"
@@ -252,9 +253,7 @@ std::string field_hover(const analysis& a, const cst::entry& e, std::uint32_t in
   return out;
 }
 
-}  // namespace
-
-std::optional<hover_info> hover(const analysis& a, std::uint32_t offset) {
+std::optional<hover_info> hover_raw(const analysis& a, std::uint32_t offset) {
   const auto& t = a.tree;
   const auto loc = locate(t, offset);
   if (loc.entry == cst::npos) {
@@ -275,6 +274,15 @@ std::optional<hover_info> hover(const analysis& a, std::uint32_t offset) {
   }
   if (loc.field != cst::npos) return hover_info{t.field_of(e, loc.field).where, field_hover(a, e, loc.field)};
   return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<hover_info> hover(const analysis& a, std::uint32_t offset) {
+  auto h = hover_raw(a, offset);
+  // Names and help texts are often Windows-1252; editors want UTF-8.
+  if (h) h->markdown = emit::detail::to_utf8(h->markdown);
+  return h;
 }
 
 }  // namespace edsc::lsp

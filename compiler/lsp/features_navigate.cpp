@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include "lsp/features.hpp"
+#include "emit/json_values.hpp"
 #include "lsp/describe.hpp"
 #include "lsp/locate.hpp"
 #include "lsp/ref_index.hpp"
@@ -57,7 +58,7 @@ std::vector<symbol> document_symbols(const analysis& a) {
   for (std::uint32_t si = 0; si < t.sections.size(); ++si) {
     const auto& s = t.sections[si];
     symbol sec;
-    sec.name = s.header_ok ? fmt::format("[{}]", t.text(s.name)) : std::string(t.text(s.header));
+    sec.name = emit::detail::to_utf8(s.header_ok ? fmt::format("[{}]", t.text(s.name)) : std::string(t.text(s.header)));
     sec.kind = sk_object;
     sec.range = s.where;
     sec.selection = s.header;
@@ -68,8 +69,8 @@ std::vector<symbol> document_symbols(const analysis& a) {
       if (e.keyword.empty()) continue;
       const auto* k = sd ? schema::find_keyword(*sd, t.text(e.keyword)).desc : nullptr;
       symbol child;
-      child.name = std::string(t.text(e.keyword));
-      child.detail = entry_name(t, e, k);
+      child.name = emit::detail::to_utf8(t.text(e.keyword));
+      child.detail = emit::detail::to_utf8(entry_name(t, e, k));
       child.kind = symbol_kind(k);
       child.range = e.where;
       child.selection = e.keyword;

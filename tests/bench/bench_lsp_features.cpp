@@ -51,11 +51,18 @@ const fixture& file() {
     x.field = static_cast<std::uint32_t>(text.find("0x", mid) + 1);
     const auto ref = text.find("Param", text.find("[Assembly]") == std::string_view::npos ? mid + 1 : text.find("[Assembly]"));
     x.param_ref = static_cast<std::uint32_t>(ref == std::string_view::npos ? mid : ref);
-    x.blank_line = static_cast<std::uint32_t>(text.find('\n', mid) + 1);
+    x.blank_line = static_cast<std::uint32_t>(text.find(";\n", mid) + 2);  // between two entries
     return x;
   }();
   return f;
 }
+
+// How much an answer holds, so a benchmark that found nothing shows it.
+template <class T>
+std::size_t count(const std::vector<T>& v) { return v.size(); }
+template <class T>
+std::size_t count(const std::optional<T>& v) { return v ? 1 : 0; }
+std::size_t count(const edsc::lsp::rename_result& r) { return r.edits.size(); }
 
 template <class F>
 void run(benchmark::State& state, F f) {
@@ -66,6 +73,7 @@ void run(benchmark::State& state, F f) {
   }
   state.SetLabel(x.a->source->path().substr(x.a->source->path().rfind('/') + 1));
   for (auto _ : state) benchmark::DoNotOptimize(f(*x.a, x));
+  state.counters["answers"] = static_cast<double>(count(f(*x.a, x)));
 }
 
 void hover_field(benchmark::State& s) { run(s, [](auto& a, auto& x) { return edsc::lsp::hover(a, x.field); }); }
