@@ -2,14 +2,21 @@
 
 namespace edsc::lsp {
 
+void apply_change(std::string& text, const content_change& change, const line_index& lines) {
+  if (!change.where) {
+    text = change.text;
+    return;
+  }
+  const auto s = lines.to_span(*change.where);
+  text.replace(s.begin, s.size(), change.text);
+}
+
 void apply_change(std::string& text, const content_change& change) {
   if (!change.where) {
     text = change.text;
     return;
   }
-  const line_index lines(text);
-  const auto s = lines.to_span(*change.where);
-  text.replace(s.begin, s.size(), change.text);
+  apply_change(text, change, line_index(text));
 }
 
 std::string uri_to_path(std::string_view uri) {

@@ -31,8 +31,9 @@ struct content_change {
   std::string text;
 };
 
-// Applies `change` to `text` in place.
+// Applies `change` to `text` in place; `lines` must index `text` as it is.
 void apply_change(std::string& text, const content_change& change);
+void apply_change(std::string& text, const content_change& change, const line_index& lines);
 
 // The path inside a file:// URI, percent-decoded; other URIs as they are.
 [[nodiscard]] std::string uri_to_path(std::string_view uri);

@@ -1,5 +1,7 @@
 // Document synchronisation (full and incremental) and the diagnostics
 // published for each version.
+#include <vector>
+
 #include "lsp/convert.hpp"
 #include "lsp/handlers.hpp"
 
@@ -29,16 +31,25 @@ void on_did_open(session& s, const json& params) {
 void on_did_change(session& s, const json& params) {
   auto* d = s.docs.find(uri_from(params));
   if (!d) throw rpc_error(error_code::invalid_params, "didChange of a document that is not open");
-  // Applied to a copy, so a broken change leaves the document as it was.
-  std::string text = d->text;
+  // Every change is read before any is applied, so a broken one leaves the
+  // document as it was.
+  std::vector<content_change> changes;
   for (const auto& c : params.at("contentChanges")) {
     content_change change;
     change.text = string_member(c, "text");
     if (c.contains("range")) change.where = range_from(c["range"]);
-    apply_change(text, change);
+    changes.push_back(std::move(change));
   }
-  d->text = std::move(text);
-  d->version = version_of(params.at("textDocument"));
+  const auto version = version_of(params.at("textDocument"));
+  for (std::size_t i = 0; i < changes.size(); ++i) {
+    // The first change of a keystroke reuses the line index of the analysis
+    // when the text has not moved on since.
+    if (i == 0 && d->lines && d->analysed && d->analysed->text() == d->text)
+      apply_change(d->text, changes[i], *d->lines);
+    else
+      apply_change(d->text, changes[i]);
+  }
+  d->version = version;
   d->analysed.reset();
   d->lines.reset();
   d->diagnostics_due = true;
