@@ -157,6 +157,7 @@ std::string keyword_hover(const analysis& a, const cst::entry& e) {
   if (!m.desc) {
     if (schema::is_vendor_specific(kw))
       return fmt::format("**{}** — a vendor-specific keyword (vendor {})", kw, kw.substr(0, kw.find('_')));
+    if (e.section == cst::npos) return fmt::format("**{}** — an entry before the first section header", kw);
     if (!sd) return fmt::format("**{}** — in a section edsc does not know", kw);
     return fmt::format("**{}** — not a keyword of [{}]", kw, sd->name);
   }
