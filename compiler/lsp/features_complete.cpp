@@ -19,7 +19,7 @@ namespace edsc::lsp {
 namespace {
 
 // LSP CompletionItemKind numbers.
-constexpr int ck_module = 9, ck_value = 12, ck_keyword = 14, ck_reference = 18, ck_enum_member = 20,
+constexpr int ck_module = 9, ck_keyword = 14, ck_reference = 18, ck_enum_member = 20,
               ck_type_parameter = 25;
 
 using schema::ref_kind;
@@ -156,7 +156,6 @@ void field_items(const analysis& a, const cst::entry& e, std::uint32_t index, st
     c.kind = ck_enum_member;
     out.push_back(std::move(c));
   }
-  (void)ck_value;
 }
 
 // An entry being written: the last one before the cursor, without its `;`
