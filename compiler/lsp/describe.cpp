@@ -70,6 +70,8 @@ std::string other_bits(std::uint64_t v, std::uint64_t known) {
   return out.empty() ? out : "bits " + out;
 }
 
+namespace {
+
 // One line per set bit of `names`, then any bit beyond them.
 template <std::size_t N>
 std::string bit_lines(std::uint64_t v, const std::string_view (&names)[N], std::string_view others_note,
@@ -80,6 +82,8 @@ std::string bit_lines(std::uint64_t v, const std::string_view (&names)[N], std::
   if (const auto o = other_bits(v, (std::uint64_t{1} << N) - 1); !o.empty()) out += fmt::format("- also {}{}\n", o, others_note);
   return out.empty() ? std::string(none) : out;
 }
+
+}  // namespace
 
 std::string describe_param_descriptor(std::uint64_t v) {
   static constexpr std::string_view names[] = {

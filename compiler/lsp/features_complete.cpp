@@ -19,7 +19,7 @@ namespace edsc::lsp {
 namespace {
 
 // LSP CompletionItemKind numbers.
-constexpr int ck_module = 9, ck_value = 12, ck_keyword = 14, ck_reference = 18, ck_enum_member = 20,
+constexpr int ck_module = 9, ck_keyword = 14, ck_reference = 18, ck_enum_member = 20,
               ck_type_parameter = 25;
 
 using schema::ref_kind;
@@ -50,14 +50,27 @@ std::uint32_t next_number(const cst::tree& t, const cst::section& s, std::string
   return top + 1;
 }
 
-void keyword_items(const cst::tree& t, std::uint32_t section, std::vector<completion_item>& out) {
+// EnumN names the values of ParamN: the first enumerated parameter
+// (descriptor bit 1) without its names yet, else one past the largest.
+std::uint32_t next_enum(const analysis& a, const cst::section& s) {
+  for (const auto& p : a.dev.params)
+    if (p.kind == model::param_kind::param && p.descriptor.is_integer() &&
+        (p.descriptor.magnitude & model::pd_enumerated) && p.enum_index == model::none &&
+        p.enum_par_index == model::none)
+      return p.number;
+  return next_number(a.tree, s, "Enum");
+}
+
+void keyword_items(const analysis& a, std::uint32_t section, std::vector<completion_item>& out) {
+  const auto& t = a.tree;
   const auto* sd = section_desc_of(t, section);
   if (!sd) return;
   const auto& s = t.sections[section];
   auto add = [&](const schema::keyword_desc& k) {
     completion_item c;
     if (k.numbered) {
-      c.label = fmt::format("{}{}", k.stem, next_number(t, s, k.stem));
+      const auto n = k.id == schema::entry_id::enum_n ? next_enum(a, s) : next_number(t, s, k.stem);
+      c.label = fmt::format("{}{}", k.stem, n);
     } else {
       for (std::uint32_t i = 0; i < s.entries_count; ++i)
         if (schema::iequals(t.text(t.entry_of(s, i).keyword), k.stem)) return;  // written already
@@ -143,7 +156,6 @@ void field_items(const analysis& a, const cst::entry& e, std::uint32_t index, st
     c.kind = ck_enum_member;
     out.push_back(std::move(c));
   }
-  (void)ck_value;
 }
 
 // An entry being written: the last one before the cursor, without its `;`
@@ -185,7 +197,7 @@ std::vector<completion_item> complete(const analysis& a, std::uint32_t offset) {
   }
   // A keyword being written, or a blank line: the section's keywords, then
   // the sections not yet in the file.
-  if (loc.section != cst::npos) keyword_items(t, loc.section, out);
+  if (loc.section != cst::npos) keyword_items(a, loc.section, out);
   if (entry == cst::npos) section_items(t, false, out);
   return out;
 }

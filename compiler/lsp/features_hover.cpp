@@ -157,6 +157,7 @@ std::string keyword_hover(const analysis& a, const cst::entry& e) {
   if (!m.desc) {
     if (schema::is_vendor_specific(kw))
       return fmt::format("**{}** — a vendor-specific keyword (vendor {})", kw, kw.substr(0, kw.find('_')));
+    if (e.section == cst::npos) return fmt::format("**{}** — an entry before the first section header", kw);
     if (!sd) return fmt::format("**{}** — in a section edsc does not know", kw);
     return fmt::format("**{}** — not a keyword of [{}]", kw, sd->name);
   }
@@ -199,7 +200,7 @@ std::string epath_text(const analysis& a, const cst::field& f) {
 }
 
 // The value of one field, decoded by what the field is.
-std::string field_value(const analysis& a, const cst::entry& e, const schema::keyword_match& m,
+std::string field_value(const analysis& a, const schema::keyword_match& m,
                         const schema::field_desc& d, const cst::field& f) {
   const auto raw = a.tree.text(f.where);
   if (f.kind == cst::field_kind::empty) return "empty";
@@ -237,7 +238,6 @@ std::string field_value(const analysis& a, const cst::entry& e, const schema::ke
   if (d.cip && (d.type == schema::value_type::integer || d.type == schema::value_type::int_or_ref))
     if (const auto* t = schema::find_type(d.cip); t && t->cls == schema::type_class::bit_string && u)
       if (const auto bits = other_bits(u, 0); !bits.empty()) out += "\n\n" + bits + " set";
-  (void)e;
   return out;
 }
 
@@ -248,7 +248,7 @@ std::string field_hover(const analysis& a, const cst::entry& e, std::uint32_t in
   const auto* d = m.desc ? schema::field_at(*m.desc, index) : nullptr;
   if (!d) return fmt::format("**{}** field {}", kw, index + 1);
   std::string out = fmt::format("**{}** field {} `{}` — {}", kw, index + 1, d->name, type_of(*d));
-  const auto value = field_value(a, e, m, *d, t.field_of(e, index));
+  const auto value = field_value(a, m, *d, t.field_of(e, index));
   if (!value.empty()) out += "\n\n" + value;
   return out;
 }

@@ -38,7 +38,8 @@ TEST(LspComplete, KeywordsOfTheSectionWithTheNextNumber) {
   auto e = with("\n[Groups]", "\n        ");
   const auto items = lsp::complete(*e.a, e.cursor);
   EXPECT_TRUE(has(items, "Param4"));
-  EXPECT_TRUE(has(items, "Enum3"));  // one past the largest EnumN
+  // Param1 is enumerated (descriptor 0x0012) but has no EnumN yet.
+  EXPECT_TRUE(has(items, "Enum1"));
   EXPECT_TRUE(has(items, "ProxyParam1"));
   EXPECT_FALSE(has(items, "Assem151"));
   EXPECT_EQ(find(items, "Param4")->insert_text, "Param4 = ");
@@ -46,6 +47,14 @@ TEST(LspComplete, KeywordsOfTheSectionWithTheNextNumber) {
   // Sections not yet in the file are offered too; present ones are not.
   EXPECT_TRUE(has(items, "[Port]"));
   EXPECT_FALSE(has(items, "[Params]"));
+}
+
+TEST(LspComplete, EnumNumberWithoutAnEnumeratedParameter) {
+  std::string text(sample);
+  text.replace(text.find("0x0012"), 6, "0x0010");
+  auto a = analyze_text(text);
+  const auto items = lsp::complete(*a, offset_of(*a, "\n[Groups]"));
+  EXPECT_TRUE(has(items, "Enum3"));  // one past the largest EnumN
 }
 
 TEST(LspComplete, AssemblyAndConnectionNumbers) {

@@ -120,6 +120,8 @@ TEST_F(LspHover, UndefinedAndUnknown) {
   EXPECT_HAS(hover_at(*b, offset_of(*b, "Mystery")).md, "a section edsc does not know");
   EXPECT_HAS(hover_at(*b, offset_of(*b, "Foo")).md, "in a section edsc does not know");
   EXPECT_EQ(hover_at(*b, 0).range, "[File]");
+  auto c = analyze_text("Stray = 1;\n" + std::string(sample));
+  EXPECT_HAS(hover_at(*c, 0).md, "**Stray** — an entry before the first section header");
   EXPECT_EQ(hover_at(*b, offset_of(*b, "\n\n[Device]", 1)).range, "<none>");  // a blank line
 }
 
