@@ -24,12 +24,6 @@ std::string shown(std::string_view s) {
   return out;
 }
 
-std::string describe_change(const source_file& src, const fixit& f) {
-  if (f.range.empty()) return fmt::format("insert '{}'", shown(f.replacement));
-  if (f.replacement.empty()) return fmt::format("remove '{}'", shown(src.text(f.range)));
-  return fmt::format("replace '{}' with '{}'", shown(src.text(f.range)), shown(f.replacement));
-}
-
 bool overlaps(const std::vector<replacement>& taken, span r) {
   for (const auto& t : taken) {
     if (r.begin < t.range.end && t.range.begin < r.end) return true;
@@ -39,6 +33,12 @@ bool overlaps(const std::vector<replacement>& taken, span r) {
 }
 
 }  // namespace
+
+std::string describe_change(const source_file& src, const fixit& f) {
+  if (f.range.empty()) return fmt::format("insert '{}'", shown(f.replacement));
+  if (f.replacement.empty()) return fmt::format("remove '{}'", shown(src.text(f.range)));
+  return fmt::format("replace '{}' with '{}'", shown(src.text(f.range)), shown(f.replacement));
+}
 
 fix_result fix_text(const std::string& path, std::string text, const check_options& options) {
   fix_result out;

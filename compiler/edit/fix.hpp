@@ -25,6 +25,9 @@ struct fix_result {
   bool converged = true;              // false if fix-its kept appearing (a rule bug)
 };
 
+// One fix-it in words: "insert ','", "replace 'input1' with 'Input1'".
+[[nodiscard]] std::string describe_change(const source_file& src, const fixit& f);
+
 // Applies every certain fix-it: per pass, all non-overlapping ones at once
 // (end of file to start, so spans stay valid), then checks again, until a
 // pass finds nothing to do. Running it on its own output changes nothing.

@@ -4,9 +4,11 @@
 // build forever after. Each body returns an empty string when the input
 // passed, else a description of the broken invariant; a crash, leak or
 // sanitizer report is the other way to fail.
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "check/check_file.hpp"
 #include "cst/cst.hpp"
@@ -17,6 +19,9 @@
 #include "emit/emit_json.hpp"
 #include "emit/header_view.hpp"
 #include "lower/lower.hpp"
+#include "lsp/jsonrpc.hpp"
+#include "lsp/server.hpp"
+#include "lsp/transport.hpp"
 #include "parse/parser.hpp"
 #include "source/source_file.hpp"
 
@@ -74,6 +79,52 @@ inline std::string header_body(std::string_view input) {
   const auto result = emit::generate_header(dev, src, emit::header_options{});
   if (result.failure) return "header template failed: " + *result.failure;
   if (!result.has_error() && result.text.empty()) return "header rendered empty";
+  return {};
+}
+
+// The language server on a message stream: input starting with "Content-"
+// is the raw byte stream (framing included); any other input is one message
+// body per line after an initialize, so mutations reach the handlers. Every
+// request and every broken message gets exactly one answer, every answer is
+// JSON, and nothing throws.
+inline std::string lsp_body(std::string_view input) {
+  std::vector<std::string> bodies;
+  if (input.substr(0, 8) == "Content-") {
+    std::size_t at = 0;
+    lsp::frame_reader reader([&](char* buf, std::size_t n) {
+      const auto take = std::min(n, input.size() - at);
+      std::copy_n(input.data() + at, take, buf);
+      at += take;
+      return take;
+    });
+    for (auto f = reader.next(); f.what != lsp::frame::kind::end; f = reader.next()) {
+      if (f.what == lsp::frame::kind::message) bodies.push_back(std::move(f.body));
+    }
+  } else {
+    bodies.emplace_back(R"({"jsonrpc":"2.0","id":0,"method":"initialize","params":{"capabilities":{}}})");
+    for (std::size_t at = 0; at <= input.size();) {
+      auto eol = input.find('\n', at);
+      if (eol == std::string_view::npos) eol = input.size();
+      bodies.emplace_back(input.substr(at, eol - at));
+      at = eol + 1;
+    }
+  }
+  std::size_t answers = 0, expected = 0;
+  std::string broken;
+  lsp::server srv({}, [&](const std::string& body) {
+    const auto j = lsp::json::parse(body, nullptr, false);
+    if (j.is_discarded() || !j.is_object()) broken = "the server sent a message that is not a JSON object";
+    else if (j.contains("id") && !j.contains("method")) ++answers;
+  });
+  for (const auto& b : bodies) {
+    if (srv.exited()) break;
+    const auto kind = lsp::parse_incoming(b).what;
+    expected += kind == lsp::incoming::kind::request || kind == lsp::incoming::kind::invalid ? 1 : 0;
+    srv.handle(b);
+    srv.idle();
+  }
+  if (!broken.empty()) return broken;
+  if (answers != expected) return "answers: " + std::to_string(answers) + ", expected " + std::to_string(expected);
   return {};
 }
 

@@ -1,0 +1,94 @@
+// UTF-16 positions, framing and message classification, in memory.
+#include <gtest/gtest.h>
+
+#include "lsp/documents.hpp"
+#include "lsp/jsonrpc.hpp"
+#include "lsp/positions.hpp"
+#include "lsp/transport.hpp"
+
+namespace edsc::lsp {
+namespace {
+
+TEST(LspPositions, Utf16UnitsPerCharacter) {
+  // a (1 byte), é (2 bytes), € (3 bytes), 😀 (4 bytes, a surrogate pair)
+  const std::string text = "a\xC3\xA9\xE2\x82\xAC\xF0\x9F\x98\x80z\r\nsecond\rthird\n";
+  const line_index lines(text);
+  EXPECT_EQ(lines.line_count(), 4u);
+  EXPECT_EQ(lines.to_position(0), (position{0, 0}));
+  EXPECT_EQ(lines.to_position(1), (position{0, 1}));
+  EXPECT_EQ(lines.to_position(3), (position{0, 2}));
+  EXPECT_EQ(lines.to_position(6), (position{0, 3}));
+  EXPECT_EQ(lines.to_position(10), (position{0, 5}));
+  EXPECT_EQ(lines.to_position(13), (position{1, 0}));  // after CRLF
+  EXPECT_EQ(lines.to_position(20), (position{2, 0}));  // after a lone CR
+  EXPECT_EQ(lines.to_position(1000), (position{3, 0}));
+  EXPECT_EQ(lines.to_offset({0, 5}), 10u);
+  EXPECT_EQ(lines.to_offset({0, 4}), 10u);   // inside the surrogate pair: after it
+  EXPECT_EQ(lines.to_offset({0, 99}), 11u);  // past the end of the line: before CRLF
+  EXPECT_EQ(lines.to_offset({1, 3}), 16u);
+  EXPECT_EQ(lines.to_offset({9, 0}), text.size());
+  EXPECT_EQ(utf16_length("\xF0\x9F\x98\x80\xFFx"), 4u);  // an invalid byte counts one unit
+}
+
+TEST(LspPositions, AppliesIncrementalChanges) {
+  std::string text = "ab\xF0\x9F\x98\x80" "cd\nef\n";
+  apply_change(text, {range{{0, 2}, {0, 4}}, "X"});  // replace the emoji
+  EXPECT_EQ(text, "abXcd\nef\n");
+  apply_change(text, {range{{1, 0}, {1, 0}}, "new\n"});
+  EXPECT_EQ(text, "abXcd\nnew\nef\n");
+  apply_change(text, {range{{0, 5}, {2, 0}}, ""});  // join lines
+  EXPECT_EQ(text, "abXcdef\n");
+  apply_change(text, {std::nullopt, "all"});
+  EXPECT_EQ(text, "all");
+}
+
+TEST(LspPositions, FileUrisBecomePaths) {
+  EXPECT_EQ(uri_to_path("file:///home/a%20b/x.eds"), "/home/a b/x.eds");
+  EXPECT_EQ(uri_to_path("file://localhost/x.eds"), "/x.eds");
+  EXPECT_EQ(uri_to_path("untitled:1"), "untitled:1");
+}
+
+std::vector<frame> frames_of(const std::string& bytes, std::size_t chunk) {
+  std::size_t at = 0;
+  frame_reader r([&](char* buf, std::size_t n) {
+    const auto take = std::min({n, chunk, bytes.size() - at});
+    std::copy_n(bytes.data() + at, take, buf);
+    at += take;
+    return take;
+  });
+  std::vector<frame> out;
+  for (auto f = r.next(); f.what != frame::kind::end; f = r.next()) out.push_back(f);
+  return out;
+}
+
+TEST(LspTransport, SplitsFramesWhateverTheChunks) {
+  const std::string bytes = frame_message("{\"a\":1}") + "content-length: 2\r\nContent-Type: x\r\n\r\n{}" +
+                            "Content-Length: 3\n\n[1]" + "\r\nContent-Length: x\r\n\r\n" + frame_message("null") +
+                            "Content-Length: 10\r\n\r\nshort";
+  for (std::size_t chunk : {1u, 3u, 65536u}) {
+    const auto fs = frames_of(bytes, chunk);
+    ASSERT_EQ(fs.size(), 6u) << chunk;
+    EXPECT_EQ(fs[0].body, "{\"a\":1}");
+    EXPECT_EQ(fs[1].body, "{}");
+    EXPECT_EQ(fs[2].body, "[1]");
+    EXPECT_EQ(fs[3].what, frame::kind::bad_header);
+    EXPECT_EQ(fs[4].body, "null");
+    EXPECT_EQ(fs[5].what, frame::kind::bad_header);  // the input ended inside the body
+  }
+}
+
+TEST(LspJsonRpc, ClassifiesMessages) {
+  EXPECT_EQ(parse_incoming(R"({"jsonrpc":"2.0","id":1,"method":"m"})").what, incoming::kind::request);
+  EXPECT_EQ(parse_incoming(R"({"jsonrpc":"2.0","id":"x","method":"m","params":[]})").what, incoming::kind::request);
+  EXPECT_EQ(parse_incoming(R"({"jsonrpc":"2.0","method":"m"})").what, incoming::kind::notification);
+  EXPECT_EQ(parse_incoming(R"({"jsonrpc":"2.0","id":1,"result":null})").what, incoming::kind::response);
+  const auto bad_params = parse_incoming(R"({"jsonrpc":"2.0","id":1,"method":"m","params":3})");
+  EXPECT_EQ(bad_params.what, incoming::kind::invalid);
+  EXPECT_EQ(bad_params.id, 1);
+  EXPECT_EQ(parse_incoming(R"({"jsonrpc":"2.0","id":1.5,"method":"m"})").what, incoming::kind::invalid);
+  EXPECT_EQ(parse_incoming("{").code, error_code::parse_error);
+  EXPECT_EQ(parse_incoming("\"\xff\"").code, error_code::parse_error);  // not UTF-8
+}
+
+}  // namespace
+}  // namespace edsc::lsp
