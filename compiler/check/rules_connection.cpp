@@ -178,24 +178,18 @@ void check_heartbeat(const check_context& ctx, const std::string& cn, const mode
   }
 }
 
-// The instance an assembly is addressed by: its Path, else the N of AssemN.
-bool has_path(const check_context& ctx, const model::assembly& a) {
-  const auto* p = ctx.dev.path_of(a.path);
-  return p != nullptr ? !p->segments.empty() : a.path.present();
-}
-
+// The instance an assembly is addressed by: the one its Path names. Without
+// a Path there is no evidence (the N of AssemN is a name, not an address).
 std::optional<std::uint32_t> assembly_instance(const check_context& ctx, const model::assembly& a) {
   if (const auto* p = ctx.dev.path_of(a.path); p != nullptr && !p->segments.empty()) {
     for (const auto& s : p->segments) {
       if (s.kind == model::segment_kind::instance || s.kind == model::segment_kind::connection_point) {
-        if (s.has_param) return std::nullopt;
+        if (!s.value_known()) return std::nullopt;
         return s.value;
       }
     }
-    return std::nullopt;
   }
-  if (has_path(ctx, a) || a.kind != model::assembly_kind::assem) return std::nullopt;  // `""` counts as no path
-  return a.number;
+  return std::nullopt;
 }
 
 void check_points(const check_context& ctx, const std::string& cn, const model::connection& c,
@@ -210,15 +204,15 @@ void check_points(const check_context& ctx, const std::string& cn, const model::
   for (std::size_t i = 0; i < 2; ++i) {
     const auto& d = i == 0 ? ot : to;
     const auto* a = format_assembly(ctx, d.format);
-    if (a == nullptr || points[i]->has_param) continue;
+    if (a == nullptr || !points[i]->value_known()) continue;
     const auto inst = assembly_instance(ctx, *a);
     if (!inst || *inst == points[i]->value) continue;
     ctx.report_with_note(diag_id::connection_point_mismatch, ctx.where(c.path),
                          fmt::format("{} path names {} connection point {} (0x{:02X}) but its {} format {} is "
-                                     "instance {} (0x{:02X}){}",
+                                     "instance {} (0x{:02X})",
                                      cn, d.name, points[i]->value, points[i]->value, d.name, assembly_name(*a), *inst,
-                                     *inst, has_path(ctx, *a) ? "" : ", going by its number as it has no Path"),
-                         has_path(ctx, *a) ? ctx.where(a->path) : ctx.entry_keyword(a->from),
+                                     *inst),
+                         ctx.where(a->path),
                          fmt::format("{} is addressed here", assembly_name(*a)));
   }
 }

@@ -11,13 +11,16 @@ namespace edsc {
 namespace {
 
 void check_enum(const check_context& ctx, const model::param_enum& e) {
+  // `Enum3` / `ProxiedEnum3` and the parameter it describes, as the file names them.
+  const auto en = schema::stem_of(model::enum_ref_kind(e.kind));
+  const auto pn = schema::stem_of(model::param_ref_kind(e.kind));
   if (e.dangling.present()) {
     ctx.report(diag_id::enum_odd_fields, ctx.where(e.dangling),
-               fmt::format("Enum{} has an odd number of fields: this value has no text", e.number));
+               fmt::format("{}{} has an odd number of fields: this value has no text", en, e.number));
   }
   if (e.param == model::none) {
     ctx.report(diag_id::enum_without_param, ctx.entry_keyword(e.from),
-               fmt::format("Enum{} describes Param{}, which does not exist", e.number, e.number));
+               fmt::format("{}{} describes {}{}, which does not exist", en, e.number, pn, e.number));
     return;
   }
   const auto& p = ctx.dev.params[e.param];
@@ -27,14 +30,14 @@ void check_enum(const check_context& ctx, const model::param_enum& e) {
     if (!v.is_integer()) continue;
     if (const auto [it, fresh] = seen.emplace(std::pair{v.negative, v.magnitude}, &v); !fresh) {
       ctx.report_with_note(diag_id::enum_duplicate_value, ctx.where(v),
-                           fmt::format("Enum{} lists value {} twice", e.number, ctx.raw(v)), ctx.where(*it->second),
+                           fmt::format("{}{} lists value {} twice", en, e.number, ctx.raw(v)), ctx.where(*it->second),
                            "first listed here");
     }
     const bool below = is_number(p.min) && compare_numbers(v, p.min) < 0;
     const bool above = is_number(p.max) && compare_numbers(v, p.max) > 0;
     if (below || above) {
       ctx.report(diag_id::enum_value_range, ctx.where(v),
-                 fmt::format("Enum{} value {} is outside Param{}'s range {} to {}", e.number, ctx.raw(v), p.number,
+                 fmt::format("{}{} value {} is outside {}{}'s range {} to {}", en, e.number, ctx.raw(v), pn, p.number,
                              ctx.raw(p.min), ctx.raw(p.max)));
     }
   }

@@ -9,28 +9,33 @@ namespace edsc {
 
 namespace {
 
+// `Param3`, `ProxiedParam3`: the parameter as the file names it.
+std::string pname(const model::param& p) {
+  return fmt::format("{}{}", schema::stem_of(model::param_ref_kind(p.kind)), p.number);
+}
+
 bool empty_or_zero(const model::value& v) { return !v.present() || (v.is_integer() && v.as_uint() == 0); }
 
 void check_type(const check_context& ctx, const model::param& p) {
   if (p.reserved.is_integer() && p.reserved.as_uint() != 0) {
     ctx.report(diag_id::param_reserved, ctx.where(p.reserved),
-               fmt::format("Param{} field 1 is {}; it is reserved and must be 0", p.number, p.reserved.as_uint()));
+               fmt::format("{} field 1 is {}; it is reserved and must be 0", pname(p), p.reserved.as_uint()));
   }
   if (p.type == nullptr) {
     if (p.data_type.is_integer()) {
       ctx.report(diag_id::param_data_type, ctx.where(p.data_type),
-                 fmt::format("Param{} data type 0x{:02X} is not a CIP type code", p.number, p.data_type.as_uint()));
+                 fmt::format("{} data type 0x{:02X} is not a CIP type code", pname(p), p.data_type.as_uint()));
     }
     return;
   }
   if (p.legacy_type) {
     ctx.report(diag_id::param_legacy_type, ctx.where(p.data_type),
-               fmt::format("Param{} uses the legacy DeviceNet type code {} for {}; write 0x{:02X}", p.number,
+               fmt::format("{} uses the legacy DeviceNet type code {} for {}; write 0x{:02X}", pname(p),
                            p.data_type.as_uint(), p.type->name, p.type->code));
   }
   if (p.type->size > 0 && p.data_size.is_integer() && p.data_size.as_uint() != p.type->size) {
     ctx.report(diag_id::param_data_size, ctx.where(p.data_size),
-               fmt::format("Param{} is {} ({} byte{}) but its data size says {}", p.number, p.type->name,
+               fmt::format("{} is {} ({} byte{}) but its data size says {}", pname(p), p.type->name,
                            p.type->size, p.type->size == 1 ? "" : "s", p.data_size.as_uint()));
   }
 }
@@ -44,15 +49,18 @@ void check_string_limits(const check_context& ctx, const model::param& p) {
   const bool too_long = p.max.is_integer() && length > p.max.as_uint();
   if (too_short || too_long) {
     ctx.report(diag_id::param_string_length, ctx.where(def),
-               fmt::format("Param{} default is {} characters, outside its length bounds {} to {}", p.number,
+               fmt::format("{} default is {} characters, outside its length bounds {} to {}", pname(p),
                            length, ctx.raw(p.min), ctx.raw(p.max)));
   }
 }
 
 void check_limits(const check_context& ctx, const model::param& p) {
   if (p.type != nullptr && p.type->cls == schema::type_class::string) check_string_limits(ctx, p);
-  if (p.type == nullptr || p.type->cls == schema::type_class::string || p.type->cls == schema::type_class::epath ||
-      p.type->cls == schema::type_class::stringi) {
+  // An untyped proxy parameter (§3.18) still has numbers to compare.
+  const bool untyped_proxy = p.type == nullptr && p.kind != model::param_kind::param && !p.data_type.present();
+  if (p.type == nullptr ? !untyped_proxy
+                        : (p.type->cls == schema::type_class::string || p.type->cls == schema::type_class::epath ||
+                           p.type->cls == schema::type_class::stringi)) {
     return;
   }
   const auto& lo = p.min;
@@ -60,18 +68,18 @@ void check_limits(const check_context& ctx, const model::param& p) {
   const auto& def = p.default_value;
   if (is_number(lo) && is_number(hi) && compare_numbers(lo, hi) > 0) {
     ctx.report_with_note(diag_id::param_min_max, ctx.where(lo),
-                         fmt::format("Param{} minimum {} is greater than its maximum {}", p.number, ctx.raw(lo), ctx.raw(hi)),
+                         fmt::format("{} minimum {} is greater than its maximum {}", pname(p), ctx.raw(lo), ctx.raw(hi)),
                          ctx.where(hi), "the maximum is here");
     return;
   }
   if (!is_number(def)) return;
   if (is_number(lo) && compare_numbers(def, lo) < 0) {
     ctx.report_with_note(diag_id::param_default_range, ctx.where(def),
-                         fmt::format("Param{} default {} is below its minimum {}", p.number, ctx.raw(def), ctx.raw(lo)),
+                         fmt::format("{} default {} is below its minimum {}", pname(p), ctx.raw(def), ctx.raw(lo)),
                          ctx.where(lo), "the minimum is here");
   } else if (is_number(hi) && compare_numbers(def, hi) > 0) {
     ctx.report_with_note(diag_id::param_default_range, ctx.where(def),
-                         fmt::format("Param{} default {} is above its maximum {}", p.number, ctx.raw(def), ctx.raw(hi)),
+                         fmt::format("{} default {} is above its maximum {}", pname(p), ctx.raw(def), ctx.raw(hi)),
                          ctx.where(hi), "the maximum is here");
   }
 }
@@ -84,26 +92,29 @@ void check_link_path(const check_context& ctx, const model::param& p) {
   if (size == bytes) return;
   if (size != 0 && bytes != 0) {
     auto& d = ctx.report(diag_id::param_link_path_size, ctx.where(p.link_path_size),
-                         fmt::format("Param{} link path size is {} but the path holds {} bytes", p.number, size,
+                         fmt::format("{} link path size is {} but the path holds {} bytes", pname(p), size,
                                      bytes));
     d.fixits.push_back({ctx.where(p.link_path_size), std::to_string(bytes)});
   } else {
     ctx.report(diag_id::param_link_path_size, ctx.where(size != 0 ? p.link_path_size : p.link_path),
-               size != 0 ? fmt::format("Param{} has a link path size of {} but no link path", p.number, size)
-                         : fmt::format("Param{} has a link path but its size is empty or 0", p.number));
+               size != 0 ? fmt::format("{} has a link path size of {} but no link path", pname(p), size)
+                         : fmt::format("{} has a link path but its size is empty or 0", pname(p)));
   }
 }
 
 void check_scaling(const check_context& ctx, const model::param& p) {
-  if (p.scaling_divisor.is_integer() && p.scaling_divisor.as_uint() == 0) {
+  // `0,0,0,0` with descriptor bit 2 clear means "scaling not used" (§3.18):
+  // the divisor matters only to a parameter that claims scaling.
+  const bool claims_scaling = p.descriptor.is_integer() && (p.descriptor.as_uint() & model::pd_scaling) != 0;
+  if (claims_scaling && p.scaling_divisor.is_integer() && p.scaling_divisor.as_uint() == 0) {
     ctx.report(diag_id::param_scaling_divisor_zero, ctx.where(p.scaling_divisor),
-               fmt::format("Param{} scaling divisor is 0", p.number));
+               fmt::format("{} scaling divisor is 0", pname(p)));
   }
   for (const auto* link : {&p.multiplier_link, &p.divisor_link, &p.base_link, &p.offset_link}) {
     if (!link->is_integer() || link->as_uint() == 0) continue;
     if (ctx.dev.find_param(static_cast<std::uint32_t>(link->as_uint())) == nullptr) {
       ctx.report(diag_id::param_scaling_link, ctx.where(*link),
-                 fmt::format("Param{} scaling link names Param{}, which does not exist", p.number, link->as_uint()));
+                 fmt::format("{} scaling link names Param{}, which does not exist", pname(p), link->as_uint()));
     }
   }
   if (!p.descriptor.is_integer()) return;
@@ -112,18 +123,18 @@ void check_scaling(const check_context& ctx, const model::param& p) {
                              p.scaling_base.present() || p.scaling_offset.present();
   if ((desc & model::pd_scaling) && !scaling_given) {
     ctx.report(diag_id::param_scaling_descriptor, ctx.where(p.descriptor),
-               fmt::format("Param{} descriptor 0x{:04X} announces scaling (bit 2) but fields 13-16 are empty",
-                           p.number, desc));
+               fmt::format("{} descriptor 0x{:04X} announces scaling (bit 2) but fields 13-16 are empty",
+                           pname(p), desc));
   }
   const bool links_given = !empty_or_zero(p.multiplier_link) || !empty_or_zero(p.divisor_link) ||
                            !empty_or_zero(p.base_link) || !empty_or_zero(p.offset_link);
   if ((desc & model::pd_scaling_links) && !links_given) {
     ctx.report(diag_id::param_scaling_descriptor, ctx.where(p.descriptor),
-               fmt::format("Param{} descriptor 0x{:04X} announces scaling links (bit 3) but fields 17-20 are empty",
-                           p.number, desc));
+               fmt::format("{} descriptor 0x{:04X} announces scaling links (bit 3) but fields 17-20 are empty",
+                           pname(p), desc));
   } else if (!(desc & model::pd_scaling_links) && links_given) {
     ctx.report(diag_id::param_scaling_descriptor, ctx.where(p.descriptor),
-               fmt::format("Param{} has scaling links but descriptor 0x{:04X} does not set bit 3", p.number, desc));
+               fmt::format("{} has scaling links but descriptor 0x{:04X} does not set bit 3", pname(p), desc));
   }
 }
 

@@ -36,7 +36,7 @@ void check_ports(const check_context& ctx) {
     }
     if (n == 1 && p.type.ok() && network_port_type(p.type.text)) {
       ctx.report(diag_id::port_one_not_backplane, ctx.where(p.port_number),
-                 fmt::format("Port{} is a {} port but uses port number 1, which is reserved for the backplane",
+                 fmt::format("Port{} is a {} port but uses port number 1, which is by convention the backplane",
                              p.number, p.type.text));
     }
   }

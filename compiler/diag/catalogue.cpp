@@ -11,7 +11,16 @@ constexpr std::array rules{
 #include "diag/catalogue.def"
 #undef EDSC_DIAG
 };
+constexpr auto bases = [] {
+  std::array<std::string_view, rules.size()> a{};
+#define EDSC_BASIS(sym, text) a[static_cast<std::size_t>(diag_id::sym)] = text;
+#include "diag/catalogue_basis.def"
+#undef EDSC_BASIS
+  return a;
+}();
 }  // namespace
+
+std::string_view basis_of(diag_id id) { return bases[static_cast<std::size_t>(id)]; }
 
 std::string_view to_string(severity s) {
   switch (s) {

@@ -29,6 +29,8 @@ struct rule_info {
 };
 
 [[nodiscard]] const rule_info& rule_of(diag_id id);
+// Why an error-severity rule is an error (catalogue_basis.def); empty for the others.
+[[nodiscard]] std::string_view basis_of(diag_id id);
 [[nodiscard]] std::span<const rule_info> all_rules();
 [[nodiscard]] std::optional<diag_id> find_rule(std::string_view name);
 [[nodiscard]] std::optional<severity> parse_severity(std::string_view name);

@@ -20,6 +20,8 @@ std::string render_rules_markdown() {
       "Each id can be used with `-W<id>`, `-Wno-<id>`, `-Werror=<id>`; each group name\n"
       "with the same flags applies to all of its diagnostics. Diagnostics of the group\n"
       "`pedantic` are off unless `-Wpedantic` or their own `-W<id>` turns them on.\n\n"
+      "Severities follow the policy in [severity.md](severity.md): an error only\n"
+      "where the file is certainly wrong, and each error rule states its basis.\n\n"
       "| id | severity | group | summary |\n|---|---|---|---|\n";
   for (const auto& r : all_rules()) {
     out += fmt::format("| [`{}`](#{}) | {} | {} | {} |\n", r.name, r.name, to_string(r.default_level), r.group,
@@ -27,8 +29,9 @@ std::string render_rules_markdown() {
   }
   for (const auto& r : all_rules()) {
     out += fmt::format("\n## {}\n\n", r.name);
-    out += fmt::format("Default severity: {}. Group: `{}`.\n\n{}\n\n", to_string(r.default_level), r.group,
-                       r.explanation);
+    out += fmt::format("Default severity: {}. Group: `{}`.\n\n", to_string(r.default_level), r.group);
+    if (const auto basis = basis_of(r.id); !basis.empty()) out += fmt::format("Basis: {}.\n\n", basis);
+    out += fmt::format("{}\n\n", r.explanation);
     fenced(out, "Triggers it", r.bad);
     fenced(out, "Does not", r.good);
     out.pop_back();

@@ -126,7 +126,10 @@ json io_json(const detail::writer& w, const model::device& d, const model::io_in
   }
   j["connections"] = std::move(conns);
   const auto& dk = desc("IO_Info", "Input1");
-  for (const auto* list : {&io.inputs, &io.outputs}) {
+  static constexpr const char* list_names[] = {"inputs", "outputs", "input_exas", "output_exas"};
+  const std::vector<model::io_data>* lists[] = {&io.inputs, &io.outputs, &io.input_exas, &io.output_exas};
+  for (std::size_t li = 0; li < std::size(lists); ++li) {
+    const auto* list = lists[li];
     json a = json::array();
     for (const auto& x : *list) {
       json e;
@@ -137,7 +140,7 @@ json io_json(const detail::writer& w, const model::device& d, const model::io_in
       if (!x.extra.empty()) e["extra"] = w.values(x.extra);
       a.push_back(std::move(e));
     }
-    j[list == &io.inputs ? "inputs" : "outputs"] = std::move(a);
+    j[list_names[li]] = std::move(a);
   }
   return j;
 }
@@ -169,6 +172,7 @@ json to_json(const model::device& d, const source_file& src) {
   counts["variants"] = d.variants.size();
   counts["arrays"] = d.arrays.size();
   counts["connections"] = d.connections.size();
+  counts["proxy_connections"] = d.proxy_connections.size();
   counts["inputs"] = d.io.inputs.size();
   counts["outputs"] = d.io.outputs.size();
   counts["ports"] = d.ports.size();

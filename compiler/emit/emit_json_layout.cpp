@@ -115,11 +115,14 @@ void layout_json(const detail::writer& w, const model::device& d, json& out) {
   out["arrays"] = std::move(arrays);
 
   const auto& ck = desc("Connection Manager", "Connection1");
+  auto connections_json = [&](const std::vector<model::connection>& list) {
   json conns = json::array();
-  for (const auto& c : d.connections) {
+  for (const auto& c : list) {
+    static constexpr std::string_view kinds[] = {"connection", "proxy_connect", "proxied_connect"};
     json j;
     w.head(j, c.from);
     j["number"] = c.number;
+    j["kind"] = kinds[static_cast<int>(c.kind)];
     named(w, j, c, model::slots::connection, ck);
     j["trigger_transport_bits"] = c.decoded ? trigger_json(c.tt) : json(nullptr);
     if (c.decoded) {
@@ -134,7 +137,10 @@ void layout_json(const detail::writer& w, const model::device& d, json& out) {
     if (!c.extra.empty()) j["extra"] = w.values(c.extra);
     conns.push_back(std::move(j));
   }
-  out["connections"] = std::move(conns);
+  return conns;
+  };
+  out["connections"] = connections_json(d.connections);
+  out["proxy_connections"] = connections_json(d.proxy_connections);
   out["connection_settings"] = settings_array(w, d.connection_settings);
 
   const auto& pk = desc("Port", "Port1");
@@ -177,7 +183,18 @@ void layout_json(const detail::writer& w, const model::device& d, json& out) {
     m["DefineSlotsInRack"] = w.value(d.mod.define_slots_in_rack);
     m["SlotDisplayRule"] = w.value(d.mod.slot_display_rule);
     m["Width"] = w.value(d.mod.width);
-    m["racks"] = settings_array(w, d.mod.racks);
+    m["ExternalID"] = w.value(d.mod.external_id);
+    const auto& rack_desc = desc("Modular", "Rack1");
+    json racks = json::array();
+    for (const auto& r : d.mod.racks) {
+      json j;
+      w.head(j, r.from);
+      j["number"] = r.number;
+      named(w, j, r, model::slots::rack, rack_desc);
+      j["slots"] = w.values(r.slots);
+      racks.push_back(std::move(j));
+    }
+    m["racks"] = std::move(racks);
     out["modular"] = std::move(m);
   }
 }

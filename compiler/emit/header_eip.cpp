@@ -29,6 +29,7 @@ const model::assembly* assembly_of(const model::device& dev, const value& format
 
 // The number an EPATH segment carries; a [ParamN] placeholder stands for its default.
 std::optional<std::uint64_t> segment_number(const model::device& dev, const model::epath_segment& s) {
+  if (!s.placeholder.empty()) return std::nullopt;  // filled in by the tool (`SLOT`)
   if (!s.has_param) return s.value;
   if (!s.param.resolved() || s.param.target >= dev.params.size()) return std::nullopt;
   const auto& d = dev.params[s.param.target].default_value;

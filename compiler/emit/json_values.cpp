@@ -53,6 +53,7 @@ std::string_view segment_name(model::segment_kind k) {
     case model::segment_kind::attribute: return "attribute";
     case model::segment_kind::symbol: return "symbol";
     case model::segment_kind::param: return "param";
+    case model::segment_kind::placeholder: return "placeholder";
     case model::segment_kind::unknown: return "unknown";
   }
   return "unknown";
@@ -117,9 +118,10 @@ json writer::path(const model::epath& p) const {
     g["type"] = segment_name(s.kind);
     if (s.kind == model::segment_kind::symbol) {
       g["symbol"] = to_utf8(s.symbol);
-    } else if (s.kind != model::segment_kind::param) {
+    } else if (s.kind != model::segment_kind::param && s.kind != model::segment_kind::placeholder) {
       g["value"] = s.value;
     }
+    if (!s.placeholder.empty()) g["placeholder"] = to_utf8(s.placeholder);
     if (s.kind == model::segment_kind::port) g["link_address"] = s.link_address;
     if (s.has_param) {
       g["param"] = ref_name(s.param);

@@ -27,18 +27,20 @@ struct context {
   [[nodiscard]] model::value field(std::uint32_t entry, std::uint32_t index,
                                    const schema::field_desc* desc);
   // A value typed by a CIP type (ParamN min/max/default, EnumN values).
+  // Without a type it is flagged unknown_type, unless `untyped` says the
+  // format leaves the type out on purpose (proxy parameters, §3.18).
   [[nodiscard]] model::value typed(std::uint32_t entry, std::uint32_t index,
-                                   const schema::cip_type_info* type);
+                                   const schema::cip_type_info* type, bool untyped = false);
 
   // Fills the named slots from the entry's fields in schema order; fields
   // beyond the slots go to `extra` (when given).
   template <class T, std::size_t N>
   void fill(std::uint32_t entry, const schema::keyword_desc& k, T& obj,
             const std::array<model::value T::*, N>& slots, std::vector<model::value>* extra,
-            const schema::cip_type_info* typed_as = nullptr) {
+            const schema::cip_type_info* typed_as = nullptr, bool untyped = false) {
     for (std::uint32_t i = 0; i < N; ++i) {
       const auto* d = schema::field_at(k, i);
-      obj.*slots[i] = (d && d->type == schema::value_type::typed) ? typed(entry, i, typed_as)
+      obj.*slots[i] = (d && d->type == schema::value_type::typed) ? typed(entry, i, typed_as, untyped)
                                                                   : field(entry, i, d);
     }
     if (!extra) return;

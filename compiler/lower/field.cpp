@@ -86,9 +86,29 @@ bool try_reference(std::string_view s, schema::ref_mask refs, value& v) {
   return true;
 }
 
+// A vendor keyword where a number or a reference goes (`16,1_RackSize,`,
+// §3.18): the configuration tool fills the value in.
+bool vendor_value(std::string_view s, value& v) {
+  if (!schema::is_vendor_specific(s)) return false;
+  v.kind = value_kind::keyword;
+  v.text = s;
+  v.state = value_state::ok;
+  return true;
+}
+
 // A bare lexeme under a pseudo-type.
 void lower_bare(std::string_view s, const schema::field_desc& d, value& v) {
   bool lexed = false;
+  switch (d.type) {
+    case value_type::integer:
+    case value_type::number_ref:
+    case value_type::reference:
+    case value_type::int_or_ref:
+    case value_type::member:
+      if (vendor_value(s, v)) return;
+      break;
+    default: break;
+  }
   switch (d.type) {
     case value_type::integer:
       if (!try_integer(s, d.cip, v)) mark_invalid(v, invalid_reason::not_a_number);
@@ -200,7 +220,7 @@ value context::field(std::uint32_t entry, std::uint32_t index, const schema::fie
   return v;
 }
 
-value context::typed(std::uint32_t entry, std::uint32_t index, const schema::cip_type_info* type) {
+value context::typed(std::uint32_t entry, std::uint32_t index, const schema::cip_type_info* type, bool untyped) {
   using schema::type_class;
   schema::field_desc d{"value", value_type::typed};
   if (type) {
@@ -218,7 +238,7 @@ value context::typed(std::uint32_t entry, std::uint32_t index, const schema::cip
   value v = field(entry, index, &d);
   // Without a usable data type nothing can be said about the value: keep
   // what the syntax gave, but flag it so nobody trusts it as typed.
-  if (!type && v.present()) mark_invalid(v, invalid_reason::unknown_type);
+  if (!type && !untyped && v.present()) mark_invalid(v, invalid_reason::unknown_type);
   return v;
 }
 

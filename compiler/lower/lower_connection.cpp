@@ -9,8 +9,13 @@ using schema::entry_id;
 void lower_connection(context& c, std::uint32_t entry, const schema::keyword_match& m) {
   const auto& k = *m.desc;
   switch (k.id) {
-    case entry_id::connection_n: {
+    case entry_id::connection_n:
+    case entry_id::proxy_connection_n:
+    case entry_id::proxied_connection_n: {
       model::connection cn;
+      cn.kind = k.id == entry_id::proxy_connection_n     ? model::connection_kind::proxy
+                : k.id == entry_id::proxied_connection_n ? model::connection_kind::proxied
+                                                         : model::connection_kind::connection;
       cn.number = m.number;
       cn.section = c.section;
       cn.from = c.origin_of(entry, model::none);
@@ -21,7 +26,8 @@ void lower_connection(context& c, std::uint32_t entry, const schema::keyword_mat
         cn.tt = model::decode_trigger(static_cast<std::uint32_t>(cn.trigger.magnitude));
         cn.cp = model::decode_params(static_cast<std::uint32_t>(cn.params.magnitude));
       }
-      c.dev.connections.push_back(std::move(cn));
+      (cn.kind == model::connection_kind::connection ? c.dev.connections : c.dev.proxy_connections)
+          .push_back(std::move(cn));
       return;
     }
     case entry_id::pitns:

@@ -31,13 +31,17 @@ void lower_io_info(context& c, model::io_info& io, std::uint32_t entry, const sc
       return;
     }
     case entry_id::input_n:
-    case entry_id::output_n: {
+    case entry_id::output_n:
+    case entry_id::input_exa_n:
+    case entry_id::output_exa_n: {
       model::io_data d;
       d.number = m.number;
-      d.output = k.id == entry_id::output_n;
+      d.output = k.id == entry_id::output_n || k.id == entry_id::output_exa_n;
       d.from = c.origin_of(entry, model::none);
       c.fill(entry, k, d, model::slots::io, &d.extra);
-      (d.output ? io.outputs : io.inputs).push_back(std::move(d));
+      const bool exa = k.id == entry_id::input_exa_n || k.id == entry_id::output_exa_n;
+      auto& list = exa ? (d.output ? io.output_exas : io.input_exas) : (d.output ? io.outputs : io.inputs);
+      list.push_back(std::move(d));
       return;
     }
     default:

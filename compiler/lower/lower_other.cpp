@@ -71,7 +71,15 @@ void lower_other(context& c, std::uint32_t entry, const schema::keyword_match& m
     case entry_id::define_slots_in_rack: return single(dev.mod.define_slots_in_rack);
     case entry_id::slot_display_rule: return single(dev.mod.slot_display_rule);
     case entry_id::width: return single(dev.mod.width);
-    case entry_id::rack_n: dev.mod.racks.push_back(make_setting(c, entry, m)); return;
+    case entry_id::external_id: return single(dev.mod.external_id);
+    case entry_id::rack_n: {
+      model::rack r;
+      r.number = m.number;
+      r.from = c.origin_of(entry, model::none);
+      c.fill(entry, k, r, model::slots::rack, &r.slots);
+      dev.mod.racks.push_back(std::move(r));
+      return;
+    }
     default: return lower_object_setting(c, entry, m);
   }
 }

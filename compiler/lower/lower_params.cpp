@@ -28,7 +28,9 @@ void lower_param(context& c, std::uint32_t entry, const schema::keyword_match& m
   // The data type comes first: it types min, max and default.
   p.data_type = c.field(entry, 4, schema::field_at(k, 4));
   if (p.data_type.is_integer()) p.type = schema::resolve_param_type(p.data_type.magnitude, &p.legacy_type);
-  c.fill(entry, k, p, model::slots::param, &p.extra, p.type);
+  // A proxy parameter without a type (§3.18): its values are plain numbers.
+  const bool untyped = p.kind != model::param_kind::param && !p.data_type.present();
+  c.fill(entry, k, p, model::slots::param, &p.extra, p.type, untyped);
   if (p.type && (p.type->cls == schema::type_class::string || p.type->cls == schema::type_class::stringi)) {
     // String parameters give min/max as length limits (EDS_FORMAT.md §3.7.1).
     static constexpr schema::field_desc length{"length", schema::value_type::integer, schema::code::UINT};
@@ -79,7 +81,9 @@ void lower_params(context& c, std::uint32_t entry, const schema::keyword_match& 
     case entry_id::proxy_param_n:
     case entry_id::proxied_param_n:
     case entry_id::constructed_param_n: return lower_param(c, entry, m);
-    case entry_id::enum_n: c.deferred_enums.push_back(entry); return;
+    case entry_id::enum_n:
+    case entry_id::proxy_enum_n:
+    case entry_id::proxied_enum_n: c.deferred_enums.push_back(entry); return;
     case entry_id::enum_par_n: return lower_enum_par(c, entry, m);
     case entry_id::group_n: return lower_group(c, entry, m);
     default: return lower_param_class(c, entry, m);
@@ -90,15 +94,21 @@ void lower_params(context& c, std::uint32_t entry, const schema::keyword_match& 
 // ParamN is known (the order of the two entries in the file is free).
 void lower_enum(context& c, std::uint32_t entry, const schema::keyword_match& m) {
   model::param_enum e;
+  e.kind = m.desc->id == entry_id::proxy_enum_n     ? model::param_kind::proxy_param
+           : m.desc->id == entry_id::proxied_enum_n ? model::param_kind::proxied_param
+                                                    : model::param_kind::param;
   e.number = m.number;
   e.from = c.origin_of(entry, model::none);
-  e.param = c.dev.find(schema::ref_kind::param, m.number);
-  const schema::cip_type_info* type = e.param == model::none ? nullptr : c.dev.params[e.param].type;
+  e.param = c.dev.find(model::param_ref_kind(e.kind), m.number);
+  const auto* p = e.param == model::none ? nullptr : &c.dev.params[e.param];
+  const schema::cip_type_info* type = p ? p->type : nullptr;
+  // The values of an untyped proxy parameter's enumeration are plain numbers too.
+  const bool untyped = e.kind != model::param_kind::param && !type && (!p || !p->data_type.present());
   const auto n = c.field_count(entry);
   const auto* text_desc = schema::field_at(*m.desc, 1);
   for (std::uint32_t i = 0; i + 1 < n; i += 2)
-    e.pairs.push_back({c.typed(entry, i, type), c.field(entry, i + 1, text_desc)});
-  if (n % 2) e.dangling = c.typed(entry, n - 1, type);
+    e.pairs.push_back({c.typed(entry, i, type, untyped), c.field(entry, i + 1, text_desc)});
+  if (n % 2) e.dangling = c.typed(entry, n - 1, type, untyped);
   c.dev.enums.push_back(std::move(e));
 }
 

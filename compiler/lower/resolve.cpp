@@ -29,7 +29,7 @@ void build_index(model::device& dev) {
   add_all(dev, dev.params, [](const model::param& p) {
     return static_cast<ref_kind>(static_cast<int>(ref_kind::param) + static_cast<int>(p.kind));
   });
-  add_fixed(dev, dev.enums, ref_kind::enum_);
+  add_all(dev, dev.enums, [](const model::param_enum& e) { return model::enum_ref_kind(e.kind); });
   add_all(dev, dev.assemblies, [](const model::assembly& a) {
     return static_cast<ref_kind>(static_cast<int>(ref_kind::assem) + static_cast<int>(a.kind));
   });
@@ -38,6 +38,9 @@ void build_index(model::device& dev) {
   });
   add_fixed(dev, dev.arrays, ref_kind::array);
   add_fixed(dev, dev.connections, ref_kind::connection);
+  add_all(dev, dev.proxy_connections, [](const model::connection& cn) {
+    return cn.kind == model::connection_kind::proxy ? ref_kind::proxy_connection : ref_kind::proxied_connection;
+  });
   add_fixed(dev, dev.groups, ref_kind::group);
   add_fixed(dev, dev.io.inputs, ref_kind::input);
   add_fixed(dev, dev.io.outputs, ref_kind::output);
@@ -64,7 +67,7 @@ void resolve_references(model::device& dev) {
   for (auto& p : dev.paths)
     for (auto& s : p.segments)
       if (s.has_param) s.param.target = dev.find(ref_kind::param, s.param.number);
-  for (auto& e : dev.enums) e.param = dev.find(ref_kind::param, e.number);
+  for (auto& e : dev.enums) e.param = dev.find(model::param_ref_kind(e.kind), e.number);
   for (auto& e : dev.enum_pars) {
     e.param = dev.find(ref_kind::param, e.number);
     if (e.param != model::none && dev.params[e.param].enum_par_index == model::none)

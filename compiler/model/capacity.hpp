@@ -33,11 +33,21 @@ struct capacity {
   [[nodiscard]] const setting* find(std::string_view canonical) const;
 };
 
-// [Modular] (§3.14); RackN layout is unconfirmed, so racks are settings.
+// RackN in a module's [Modular] (EDS_FORMAT.md §3.18): the identity of a
+// chassis the module fits, three reserved fields, then the slots it may take.
+struct rack {
+  std::uint32_t number = 0;
+  origin from;
+  value vendor, product_type, product_code, major_revision, minor_revision, reserved1, reserved2,
+      reserved3;
+  std::vector<value> slots;
+};
+
+// [Modular] (§3.14 for chassis files, §3.18 for module files).
 struct modular {
   std::uint32_t section = none;
-  value define_slots_in_rack, slot_display_rule, width;
-  std::vector<setting> racks;
+  value define_slots_in_rack, slot_display_rule, width, external_id;
+  std::vector<rack> racks;
 };
 
 }  // namespace edsc::model

@@ -31,8 +31,12 @@ struct connection_params {
 [[nodiscard]] trigger_transport decode_trigger(std::uint32_t v);
 [[nodiscard]] connection_params decode_params(std::uint32_t v);
 
-// ConnectionN. The bit fields are decoded when fields 1/2 are valid integers.
+enum class connection_kind : std::uint8_t { connection, proxy, proxied };
+
+// ConnectionN (and ProxyConnectN / ProxiedConnectN, §3.18, which hold the
+// same layout for a proxied module, usually all zero). The bit fields are decoded when fields 1/2 are valid integers.
 struct connection {
+  connection_kind kind = connection_kind::connection;
   std::uint32_t number = 0;
   origin from;
   value trigger, params, ot_rpi, ot_size, ot_format, to_rpi, to_size, to_format,

@@ -1,4 +1,6 @@
 // EPATH strings, string escapes and Base64 (EDS_FORMAT.md §1.6, §5, §8.2).
+#include <algorithm>
+
 #include "model/decode.hpp"
 #include "schema/text.hpp"
 
@@ -13,12 +15,26 @@ int hex_digit(char c) {
   return -1;
 }
 
-// One lexed EPATH item: a byte, or a [ParamN] standing for one.
+// One lexed EPATH item: a byte, a [ParamN] standing for one, or an
+// upper-case placeholder word the tool replaces (`SLOT`, §3.18).
 struct item {
   std::uint8_t byte = 0;
   bool is_param = false;
   std::uint32_t param = 0;
+  std::string_view word;
 };
+
+bool is_upper_or_digit(char c) { return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'; }
+
+// `SLOT`: an upper-case word of at least two characters that is not a hex byte.
+std::size_t placeholder_length(std::string_view s, std::size_t i) {
+  if (s[i] < 'A' || s[i] > 'Z') return 0;
+  std::size_t j = i;
+  while (j < s.size() && is_upper_or_digit(s[j])) ++j;
+  const auto n = j - i;
+  if (n < 2 || (n == 2 && hex_digit(s[i]) >= 0 && hex_digit(s[i + 1]) >= 0)) return 0;
+  return n;
+}
 
 bool lex_epath(std::string_view s, std::vector<item>& items) {
   std::size_t i = 0;
@@ -34,13 +50,16 @@ bool lex_epath(std::string_view s, std::vector<item>& items) {
       std::uint32_t n = 0;
       if (!schema::parse_reference(s.substr(i + 1, close - i - 1), schema::bit(schema::ref_kind::param), k, n))
         return false;
-      items.push_back({0, true, n});
+      items.push_back({0, true, n, {}});
       i = close + 1;
+    } else if (const auto n = placeholder_length(s, i); n > 0) {
+      items.push_back({0, false, 0, s.substr(i, n)});
+      i += n;
     } else {
       if (i + 1 >= s.size()) return false;
       const int hi = hex_digit(s[i]), lo = hex_digit(s[i + 1]);
       if (hi < 0 || lo < 0) return false;
-      items.push_back({static_cast<std::uint8_t>(hi * 16 + lo), false, 0});
+      items.push_back({static_cast<std::uint8_t>(hi * 16 + lo), false, 0, {}});
       i += 2;
     }
     if (i < s.size() && s[i] != ' ' && s[i] != '\t') return false;  // items are blank-separated
@@ -58,6 +77,7 @@ bool read_number(const std::vector<item>& it, std::size_t at, std::size_t bytes,
       seg.has_param = true;
       seg.param = reference{.number = it[at + k].param, .target = none};
     }
+    if (!it[at + k].word.empty()) seg.placeholder = it[at + k].word;
     v |= static_cast<std::uint32_t>(it[at + k].byte) << (8 * k);
   }
   seg.value = v;
@@ -88,6 +108,8 @@ bool epath(std::string_view s, model::epath& out, std::deque<std::string>& stora
   std::vector<item> it;
   it.reserve(s.size() / 3 + 1);
   if (!lex_epath(s, it)) return false;
+  // Placeholder words stand inside a path; words alone are not one.
+  if (!it.empty() && std::all_of(it.begin(), it.end(), [](const item& x) { return !x.word.empty(); })) return false;
   out = model::epath{};
   out.byte_count = static_cast<std::uint32_t>(it.size());
   segments(it, false, out, storage);
@@ -112,6 +134,13 @@ void segments(const std::vector<item>& it, bool packed, model::epath& out, std::
       seg.kind = segment_kind::param;
       seg.has_param = true;
       seg.param = reference{.number = it[i].param, .target = none};
+      out.segments.push_back(seg);
+      ++i;
+      continue;
+    }
+    if (!it[i].word.empty()) {
+      seg.kind = segment_kind::placeholder;
+      seg.placeholder = it[i].word;
       out.segments.push_back(seg);
       ++i;
       continue;
@@ -167,6 +196,7 @@ void segments(const std::vector<item>& it, bool packed, model::epath& out, std::
         epath_segment tmp;
         if (!read_number(it, at, 1, tmp)) { out.complete = false; out.segments.push_back(seg); break; }
         seg.link_address = tmp.value;
+        seg.placeholder = tmp.placeholder;  // `01 SLOT`: the link address is the module's slot
         ++at;
       }
       out.segments.push_back(seg);

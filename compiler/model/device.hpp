@@ -80,6 +80,7 @@ struct device {
   std::vector<variant> variants;
   std::vector<array> arrays;
   std::vector<connection> connections;
+  std::vector<connection> proxy_connections;  // ProxyConnectN / ProxiedConnectN, apart: no rule reads them as real
   std::vector<setting> connection_settings;  // PITNS, safety keywords
   std::vector<port> ports;
   capacity cap;

@@ -16,6 +16,7 @@ enum class segment_kind : std::uint8_t {
   attribute,         // 0x30 / 0x31
   symbol,            // 0x91 ANSI extended symbol
   param,             // a [ParamN] standing where a segment starts
+  placeholder,       // an upper-case word the tool replaces (`SLOT`, §3.18) where a segment starts
   unknown,           // a segment type edsc does not decode; the rest is kept as bytes
 };
 
@@ -30,6 +31,11 @@ struct epath_segment {
   bool has_param = false;
   reference param;
   std::string_view symbol;  // symbol segments: the characters (device::strings)
+  // A placeholder word (`SLOT`) standing for the value, or for the whole
+  // segment (kind placeholder); the tool fills it in when it connects.
+  std::string_view placeholder;
+  // False when a [ParamN] or a placeholder stands for the value.
+  [[nodiscard]] bool value_known() const { return !has_param && placeholder.empty(); }
 };
 
 // A decoded EPATH string. `byte_count` counts [ParamN] placeholders as one

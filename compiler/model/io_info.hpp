@@ -38,6 +38,8 @@ struct io_info {
   value default_mask;
   std::vector<io_connection_info> connections;
   std::vector<io_data> inputs, outputs;  // in file order
+  // InputExaN / OutputExaN (§3.18): same layout, path names an AssemExaN.
+  std::vector<io_data> input_exas, output_exas;
 };
 
 }  // namespace edsc::model

@@ -4,6 +4,7 @@
 
 #include "model/value.hpp"
 #include "schema/cip_types.hpp"
+#include "schema/schema.hpp"
 
 namespace edsc::model {
 
@@ -16,9 +17,24 @@ enum param_descriptor_bit : std::uint16_t {
 
 enum class param_kind : std::uint8_t { param, proxy_param, proxied_param, constructed_param };
 
+// The reference kind naming a parameter of that kind (`ProxiedParam3`).
+[[nodiscard]] constexpr schema::ref_kind param_ref_kind(param_kind k) {
+  return static_cast<schema::ref_kind>(static_cast<int>(schema::ref_kind::param) + static_cast<int>(k));
+}
+// The reference kind naming the enumeration of a parameter of that kind.
+[[nodiscard]] constexpr schema::ref_kind enum_ref_kind(param_kind k) {
+  switch (k) {
+    case param_kind::proxy_param: return schema::ref_kind::proxy_enum;
+    case param_kind::proxied_param: return schema::ref_kind::proxied_enum;
+    default: return schema::ref_kind::enum_;
+  }
+}
+
 // ParamN and its proxy variants. min/max/default are typed by the
 // parameter's own data type: `type` is that type (nullptr when field 5 is
 // missing or unknown, in which case the three are invalid/unknown_type).
+// A proxy parameter without a data type (§3.18) keeps them as untyped
+// numbers: the proxied module owns the type.
 struct param {
   param_kind kind = param_kind::param;
   std::uint32_t number = 0;
@@ -40,7 +56,10 @@ struct enum_pair {
 };
 
 // EnumN in [Params]; `param` is the index of ParamN with the same N.
+// ProxyEnumN / ProxiedEnumN describe ProxyParamN / ProxiedParamN (`kind`
+// names the parameter kind they belong to).
 struct param_enum {
+  param_kind kind = param_kind::param;
   std::uint32_t number = 0;
   origin from;
   std::vector<enum_pair> pairs;

@@ -53,6 +53,10 @@ inline constexpr std::array<slot<port>, 4> port{&port::type, &port::name, &port:
 
 inline constexpr std::array<slot<tspec>, 3> tspec{&tspec::direction, &tspec::size, &tspec::rate};
 
+inline constexpr std::array<slot<rack>, 8> rack{
+    &rack::vendor, &rack::product_type, &rack::product_code, &rack::major_revision,
+    &rack::minor_revision, &rack::reserved1, &rack::reserved2, &rack::reserved3};
+
 inline constexpr std::array<slot<group>, 2> group{&group::name, &group::count};
 
 }  // namespace edsc::model::slots

@@ -30,7 +30,7 @@ void for_each_value(Dev& d, F&& f) {
   for (auto* io : {&d.io, &d.variant_io}) {
     f(io->default_mask);
     for (auto& c : io->connections) slots_of(c, slots::io_conn);
-    for (auto* list : {&io->inputs, &io->outputs})
+    for (auto* list : {&io->inputs, &io->outputs, &io->input_exas, &io->output_exas})
       for (auto& x : *list) slots_of(x, slots::io), all(x.extra);
   }
   auto& pc = d.parameter_class;
@@ -53,13 +53,14 @@ void for_each_value(Dev& d, F&& f) {
     all(v.incomplete);
   }
   for (auto& a : d.arrays) slots_of(a, slots::array), all(a.extents);
-  for (auto& c : d.connections) slots_of(c, slots::connection), all(c.extra);
+  for (auto* cs : {&d.connections, &d.proxy_connections})
+    for (auto& c : *cs) slots_of(c, slots::connection), all(c.extra);
   for (auto& s : d.connection_settings) all(s.fields);
   for (auto& p : d.ports) slots_of(p, slots::port), all(p.extra);
   for (auto& t : d.cap.tspecs) slots_of(t, slots::tspec), all(t.extra);
   for (auto& s : d.cap.settings) all(s.fields);
-  f(d.mod.define_slots_in_rack), f(d.mod.slot_display_rule), f(d.mod.width);
-  for (auto& r : d.mod.racks) all(r.fields);
+  f(d.mod.define_slots_in_rack), f(d.mod.slot_display_rule), f(d.mod.width), f(d.mod.external_id);
+  for (auto& r : d.mod.racks) slots_of(r, slots::rack), all(r.slots);
   for (auto& o : d.objects)
     for (auto& s : o.settings) all(s.fields);
   for (auto& u : d.unknown) all(u.fields);

@@ -68,7 +68,8 @@ const section_desc vendor_object_class{"ClassN_VendorM", sf::object_class, 0, no
 constexpr std::array<std::string_view, static_cast<std::size_t>(ref_kind::count_)> stems{
     "Param", "ProxyParam", "ProxiedParam", "ConstructedParam", "Enum", "Assem", "AssemExa",
     "ProxyAssem", "ProxiedAssem", "ProxyAssemExa", "ProxiedAssemExa", "Variant", "VariantExa",
-    "BitStringVariant", "Array", "Connection", "Group", "Input", "Output"};
+    "BitStringVariant", "Array", "Connection", "Group", "Input", "Output", "ProxyEnum",
+    "ProxiedEnum", "ProxyConnect", "ProxiedConnect"};
 
 const keyword_desc* match_in(std::span<const keyword_desc> list, std::string_view kw,
                              split_keyword parts) {

@@ -34,7 +34,10 @@ enum class value_type : std::uint8_t {
 enum class ref_kind : std::uint8_t {
   param, proxy_param, proxied_param, constructed_param, enum_, assem, assem_exa,
   proxy_assem, proxied_assem, proxy_assem_exa, proxied_assem_exa, variant, variant_exa,
-  bitstring_variant, array, connection, group, input, output, count_,
+  bitstring_variant, array, connection, group, input, output,
+  // Proxy descriptions (EDS_FORMAT.md §3.18): after the original kinds so
+  // their bit positions stay put.
+  proxy_enum, proxied_enum, proxy_connection, proxied_connection, count_,
 };
 using ref_mask = std::uint32_t;
 [[nodiscard]] constexpr ref_mask bit(ref_kind k) { return ref_mask{1} << static_cast<unsigned>(k); }
@@ -64,14 +67,18 @@ enum class entry_id : std::uint16_t {
   io_default, poll_info, strobe_info, cos_info, cyclic_info, input_n, output_n,
   // [ParamClass] [Params] [EnumPar] [Groups]
   pc_max_inst, pc_descriptor, pc_cfg_assembly, pc_safety_cfg_assembly,
-  param_n, proxy_param_n, proxied_param_n, constructed_param_n, enum_n, enum_par_n, group_n,
+  param_n, proxy_param_n, proxied_param_n, constructed_param_n, enum_n, proxy_enum_n, proxied_enum_n,
+  enum_par_n, group_n,
+  // [IO_Info] extended entries (DeviceNet POINT I/O, §3.18)
+  input_exa_n, output_exa_n,
   // [Assembly]
   assem_n, assem_exa_n, proxy_assem_n, proxied_assem_n, proxy_assem_exa_n, proxied_assem_exa_n,
   variant_n, variant_exa_n, bitstring_variant_n, array_n,
   // [Connection Manager]
-  connection_n, pitns, pitns_usec, safety_setting, default_safety_connections,
+  connection_n, proxy_connection_n, proxied_connection_n, pitns, pitns_usec, safety_setting, default_safety_connections,
   // [Port] [Capacity] [Modular]
   port_n, tspec_n, capacity_setting, define_slots_in_rack, slot_display_rule, width, rack_n,
+  external_id,
   // common object-class keywords and class-specific settings
   object_setting, attribute_list, service_list, service_description_n,
 };

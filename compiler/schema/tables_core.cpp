@@ -1,5 +1,8 @@
 // Schema rows for [File], [Device], [Device Classification], [IO_Info],
 // [ParamClass], [Params], [EnumPar] and [Groups] (EDS_FORMAT.md §3.1-3.9).
+#include <array>
+#include <iterator>
+
 #include "schema/tables.hpp"
 
 namespace edsc::schema::tables {
@@ -69,6 +72,27 @@ constexpr field_desc f_param[] = {
     {"international_units", vt::stringi, 0, false},
     {"international_help", vt::stringi, 0, false},
 };
+// ProxyParamN / ProxiedParamN (§3.18): the ParamN layout, but the proxied
+// module owns the type, so reserved, descriptor and data type may be empty.
+constexpr auto proxy_param_fields() {
+  std::array<field_desc, std::size(f_param)> a{};
+  for (std::size_t i = 0; i < a.size(); ++i) a[i] = f_param[i];
+  a[0].required = a[3].required = a[4].required = false;
+  return a;
+}
+constexpr auto f_proxy_param = proxy_param_fields();
+// InputExaN / OutputExaN (§3.18): the InputN layout; the size may be empty and
+// the path names the (variable) assembly that carries the data.
+constexpr ref_mask exa_targets = bit(rk::assem) | bit(rk::assem_exa);
+constexpr field_desc f_io_exa[] = {
+    {"size", vt::integer, c::UINT, false},
+    {"significant_bits", vt::integer, c::UINT, false},
+    {"mask", vt::integer, c::WORD, true},
+    {"name", vt::string, 0, true},
+    {"path_size", vt::integer, c::USINT, false},
+    {"path", vt::member, 0, false, exa_targets},
+    {"help", vt::string, 0, false},
+};
 constexpr field_desc f_any_tail[] = {{"field", vt::any, 0, false}};
 constexpr field_desc f_enum_tail[] = {{"value", vt::typed, 0, true}, {"text", vt::string, 0, true}};
 constexpr field_desc f_enum_par_tail[] = {{"text", vt::string, 0, true}};
@@ -107,7 +131,7 @@ const keyword_desc classification_keywords[1] = {
     {"Class", true, entry_id::class_n, f_class, f_class},
 };
 
-const keyword_desc io_info_keywords[7] = {
+const keyword_desc io_info_keywords[9] = {
     {"Default", false, entry_id::io_default, f_word},
     {"PollInfo", false, entry_id::poll_info, f_io_info},
     {"StrobeInfo", false, entry_id::strobe_info, f_io_info},
@@ -115,6 +139,8 @@ const keyword_desc io_info_keywords[7] = {
     {"CyclicInfo", false, entry_id::cyclic_info, f_io_info},
     {"Input", true, entry_id::input_n, f_io_data},
     {"Output", true, entry_id::output_n, f_io_data},
+    {"InputExa", true, entry_id::input_exa_n, f_io_exa},
+    {"OutputExa", true, entry_id::output_exa_n, f_io_exa},
 };
 
 const keyword_desc param_class_keywords[4] = {
@@ -124,12 +150,14 @@ const keyword_desc param_class_keywords[4] = {
     {"SafetyCfgAssembly", false, entry_id::pc_safety_cfg_assembly, f_cfg_assembly},
 };
 
-const keyword_desc params_keywords[5] = {
+const keyword_desc params_keywords[7] = {
     {"Param", true, entry_id::param_n, f_param},
-    {"ProxyParam", true, entry_id::proxy_param_n, f_param},
-    {"ProxiedParam", true, entry_id::proxied_param_n, f_param},
+    {"ProxyParam", true, entry_id::proxy_param_n, f_proxy_param},
+    {"ProxiedParam", true, entry_id::proxied_param_n, f_proxy_param},
     {"ConstructedParam", true, entry_id::constructed_param_n, {}, f_any_tail},
     {"Enum", true, entry_id::enum_n, {}, f_enum_tail},
+    {"ProxyEnum", true, entry_id::proxy_enum_n, {}, f_enum_tail},
+    {"ProxiedEnum", true, entry_id::proxied_enum_n, {}, f_enum_tail},
 };
 
 const keyword_desc enum_par_keywords[1] = {

@@ -1,5 +1,8 @@
 // Schema rows for [Assembly], [Connection Manager], [Port], [Capacity],
 // [Modular] and the object-class sections (EDS_FORMAT.md §3.10-3.15).
+#include <array>
+#include <iterator>
+
 #include "schema/tables.hpp"
 
 namespace edsc::schema::tables {
@@ -83,6 +86,17 @@ constexpr field_desc f_connection[] = {
     {"safety_async", vt::integer, c::UDINT, false},
     {"safety_max_consumers", vt::integer, c::UDINT, false},
 };
+// ProxyConnectN / ProxiedConnectN (§3.18): the ConnectionN layout with
+// every field zero or empty; nothing is required.
+constexpr auto proxy_connection_fields() {
+  std::array<field_desc, std::size(f_connection)> a{};
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    a[i] = f_connection[i];
+    a[i].required = false;
+  }
+  return a;
+}
+constexpr auto f_proxy_connection = proxy_connection_fields();
 constexpr field_desc f_yes_no[] = {{"value", vt::keyword, 0, true, 0, yes_no}};
 constexpr field_desc f_uint[] = {{"value", vt::integer, c::UINT, true}};
 constexpr field_desc f_udint[] = {{"value", vt::integer, c::UDINT, true}};
@@ -92,6 +106,17 @@ constexpr field_desc f_real[] = {{"value", vt::real, 0, true}};
 constexpr field_desc f_string[] = {{"value", vt::string, 0, true}};
 constexpr field_desc f_any[] = {{"value", vt::any, 0, false}};
 constexpr field_desc f_conn_list[] = {{"connection", vt::number_ref, c::UINT, true, bit(rk::connection)}};
+constexpr field_desc f_rack[] = {
+    {"vendor", vt::integer, c::UINT, false},
+    {"product_type", vt::integer, c::UINT, false},
+    {"product_code", vt::integer, c::UINT, false},
+    {"major_revision", vt::integer, c::USINT, false},
+    {"minor_revision", vt::integer, c::USINT, false},
+    {"reserved1", vt::any, 0, false},
+    {"reserved2", vt::any, 0, false},
+    {"reserved3", vt::any, 0, false},
+};
+constexpr field_desc f_rack_slot[] = {{"slot", vt::integer, c::UINT, false}};
 constexpr field_desc f_param_ref[] = {{"param", vt::reference, 0, true, any_param}};
 
 constexpr field_desc f_port[] = {
@@ -132,8 +157,10 @@ const keyword_desc assembly_keywords[10] = {
     {"Array", true, entry_id::array_n, f_array, f_array_tail},
 };
 
-const keyword_desc connection_manager_keywords[9] = {
+const keyword_desc connection_manager_keywords[11] = {
     {"Connection", true, entry_id::connection_n, f_connection},
+    {"ProxyConnect", true, entry_id::proxy_connection_n, f_proxy_connection},
+    {"ProxiedConnect", true, entry_id::proxied_connection_n, f_proxy_connection},
     {"PITNS", false, entry_id::pitns, f_yes_no},
     {"PITNS_usec", false, entry_id::pitns_usec, f_yes_no},
     {"MaxSafetyConnections", false, entry_id::safety_setting, f_uint},
@@ -163,12 +190,14 @@ const keyword_desc capacity_keywords[12] = {
     {"MaxSafetyConnections", false, entry_id::capacity_setting, f_uint},
 };
 
-const keyword_desc modular_keywords[4] = {
+const keyword_desc modular_keywords[5] = {
     {"DefineSlotsInRack", false, entry_id::define_slots_in_rack, f_uint},
     {"SlotDisplayRule", false, entry_id::slot_display_rule, f_param_ref},
     {"Width", false, entry_id::width, f_uint},
-    // Rack layout is unconfirmed (§3.14): keep every field as written.
-    {"Rack", true, entry_id::rack_n, {}, f_any},
+    // A chassis the module fits, and the slots it may occupy (§3.18).
+    {"Rack", true, entry_id::rack_n, f_rack, f_rack_slot},
+    // A hex byte string identifying the module to the adapter (§3.18).
+    {"ExternalID", false, entry_id::external_id, f_string},
 };
 
 const keyword_desc common_keywords[10] = {

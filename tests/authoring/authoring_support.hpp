@@ -10,6 +10,8 @@
 #include <sys/wait.h>
 #include <vector>
 
+#include "corpus_dirs.hpp"
+
 namespace authoring {
 
 namespace fs = std::filesystem;
@@ -27,11 +29,7 @@ inline void write_bytes(const fs::path& p, const std::string& bytes) {
 }
 
 inline std::vector<fs::path> corpus_files() {
-  std::vector<fs::path> out;
-  for (const auto& e : fs::directory_iterator(EDSC_CORPUS_DIR))
-    if (e.path().extension() == ".eds") out.push_back(e.path());
-  std::sort(out.begin(), out.end());
-  return out;
+  return edsc::corpora::all_files();
 }
 
 inline std::string quote_arg(const std::string& s) {

@@ -1,6 +1,7 @@
 // The edsc binary as a user runs it: exit statuses, messages, hostile input,
 // and the no-op edit that must give every file back byte for byte.
 #include "cli/cli_support.hpp"
+#include "corpus_dirs.hpp"
 
 namespace {
 
@@ -139,20 +140,19 @@ TEST_F(Cli, NulByte) {
 
 TEST_F(Cli, EditWithoutOpsCopiesEveryCorpusFileByteForByte) {
   std::size_t n = 0;
-  for (const auto& e : fs::directory_iterator(EDSC_CORPUS_DIR)) {
-    if (e.path().extension() != ".eds") continue;
-    const auto name = e.path().filename().string();
+  for (const auto& path : edsc::corpora::all_files()) {
+    const auto name = path.filename().string();
     SCOPED_TRACE(name);
     const auto out = dir_ / "out.eds";
-    std::vector<std::string> args{"edit", e.path().string(), "-o", out.string()};
+    std::vector<std::string> args{"edit", path.string(), "-o", out.string()};
     if (name == kh_ko || name == fanuc) args.push_back("--force");
     const auto r = run_edsc(args);
     ASSERT_EQ(r.status, 0) << r.output;
-    EXPECT_TRUE(read_bytes(out) == read_bytes(e.path())) << "copy differs";
+    EXPECT_TRUE(read_bytes(out) == read_bytes(path)) << "copy differs";
     fs::remove(out);
     ++n;
   }
-  EXPECT_GE(n, 117u);
+  EXPECT_GE(n, edsc::corpora::file_count);
   EXPECT_TRUE(listing().empty());  // no temporary file left behind
 }
 

@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include "corpus_dirs.hpp"
 #include "emit/c_text.hpp"
 #include "emit/header_view.hpp"
 #include "emit_support.hpp"
@@ -119,11 +120,8 @@ struct job {
 
 TEST(CorpusHeaders, CompileStrictlyAndAgreeWithTheModel) {
   temp_dir dir("corpus-headers");
-  std::vector<fs::path> files;
-  for (const auto& e : fs::directory_iterator(EDSC_CORPUS_DIR))
-    if (e.path().extension() == ".eds") files.push_back(e.path());
-  std::sort(files.begin(), files.end());
-  ASSERT_GE(files.size(), 100u);
+  const auto files = edsc::corpora::all_files();
+  ASSERT_GE(files.size(), edsc::corpora::file_count);
 
   std::vector<job> jobs;
   for (std::size_t i = 0; i < files.size(); ++i) {

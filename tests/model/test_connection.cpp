@@ -98,6 +98,8 @@ TEST(Connection, PortCapacityModular) {
   EXPECT_EQ(d.cap.find("MaxIOConnections")->fields[0].as_uint(), 16u);
   EXPECT_EQ(d.mod.width.as_uint(), 1u);
   ASSERT_EQ(d.mod.racks.size(), 1u);
-  EXPECT_EQ(d.mod.racks[0].fields.size(), 9u);
+  EXPECT_EQ(d.mod.racks[0].product_code.as_uint(), 0x149u);
+  ASSERT_EQ(d.mod.racks[0].slots.size(), 1u);
+  EXPECT_EQ(d.mod.racks[0].slots[0].as_uint(), 0u);
   EXPECT_EQ(d.classes.networks, model::net_ethernetip);
 }

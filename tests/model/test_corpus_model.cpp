@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 
+#include "corpus_dirs.hpp"
 #include "emit/emit_json.hpp"
 #include "model_support.hpp"
 
@@ -25,11 +26,7 @@ std::string slurp(const fs::path& p) {
 }
 
 std::vector<fs::path> corpus_files() {
-  std::vector<fs::path> out;
-  for (const auto& e : fs::directory_iterator(EDSC_CORPUS_DIR))
-    if (e.path().extension() == ".eds") out.push_back(e.path());
-  std::sort(out.begin(), out.end());
-  return out;
+  return edsc::corpora::all_files();
 }
 
 std::string lower_ascii(std::string s) {
@@ -118,7 +115,7 @@ TEST(CorpusModel, EveryFileLowersAndCountsAgree) {
     for (const auto& p : dev.params) (p.kind == model::param_kind::param ? params : proxies)++;
     EXPECT_EQ(params, sum(counts, "params", {"param"}));
     EXPECT_EQ(proxies, sum(counts, "params", {"proxyparam", "proxiedparam", "constructedparam"}));
-    EXPECT_EQ(static_cast<int>(dev.enums.size()), sum(counts, "params", {"enum"}));
+    EXPECT_EQ(static_cast<int>(dev.enums.size()), sum(counts, "params", {"enum", "proxyenum", "proxiedenum"}));
     EXPECT_EQ(static_cast<int>(dev.enum_pars.size()), sum(counts, "enumpar", {"param"}));
     EXPECT_EQ(static_cast<int>(dev.groups.size()), sum(counts, "groups", {"group"}));
     EXPECT_EQ(static_cast<int>(dev.assemblies.size()),
@@ -127,6 +124,10 @@ TEST(CorpusModel, EveryFileLowersAndCountsAgree) {
     EXPECT_EQ(static_cast<int>(dev.connections.size()), sum(counts, "connection manager", {"connection"}));
     EXPECT_EQ(static_cast<int>(dev.io.inputs.size()), sum(counts, "io_info", {"input"}));
     EXPECT_EQ(static_cast<int>(dev.io.outputs.size()), sum(counts, "io_info", {"output"}));
+    EXPECT_EQ(static_cast<int>(dev.io.input_exas.size() + dev.io.output_exas.size()),
+              sum(counts, "io_info", {"inputexa", "outputexa"}));
+    EXPECT_EQ(static_cast<int>(dev.proxy_connections.size()),
+              sum(counts, "connection manager", {"proxyconnect", "proxiedconnect"}));
     EXPECT_EQ(static_cast<int>(dev.variant_io.inputs.size() + dev.variant_io.outputs.size()),
               sum(counts, "variant_io_info", {"input", "output"}));
     EXPECT_EQ(static_cast<int>(dev.ports.size()), sum(counts, "port", {"port"}));

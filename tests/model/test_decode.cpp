@@ -183,3 +183,32 @@ TEST(Decode, SymbolAnsiIsTheSymbolicPathPlaceholder) {
   epath other;
   EXPECT_FALSE(decode::epath("SYMBOL_OTHER", other, store));
 }
+
+// EDS_FORMAT.md §3.18: an upper-case word inside a path is filled in by the
+// configuration tool (`SLOT`); words alone are no path, and hex-looking
+// pairs stay bytes.
+TEST(Decode, EpathPlaceholderWords) {
+  using namespace edsc::model;
+  std::deque<std::string> store;
+  epath p;
+  ASSERT_TRUE(decode::epath("01 SLOT 20 04 24 78 30 03", p, store));
+  ASSERT_EQ(p.segments.size(), 4u);
+  EXPECT_EQ(p.segments[0].kind, segment_kind::port);
+  EXPECT_EQ(p.segments[0].placeholder, "SLOT");
+  EXPECT_FALSE(p.segments[0].value_known());
+  EXPECT_EQ(p.segments[2].kind, segment_kind::instance);
+  EXPECT_EQ(p.segments[2].value, 0x78u);
+  EXPECT_TRUE(p.segments[2].value_known());
+  EXPECT_EQ(p.byte_count, 8u);
+
+  epath q;
+  ASSERT_TRUE(decode::epath("RACK 20 04", q, store));
+  EXPECT_EQ(q.segments[0].kind, segment_kind::placeholder);
+  EXPECT_EQ(q.segments[0].placeholder, "RACK");
+
+  epath r;
+  EXPECT_FALSE(decode::epath("SYMBOL", r, store));
+  EXPECT_FALSE(decode::epath("20 slot 24", r, store));  // lower case is no placeholder
+  ASSERT_TRUE(decode::epath("AB CD", r, store));          // hex bytes, not words
+  EXPECT_EQ(r.byte_count, 2u);
+}

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Runs `edsc dump --json` on every corpus file and validates the output
-against docs/dump-json.schema.json. Usage: validate_dump.py EDSC SCHEMA CORPUS_DIR"""
+against docs/dump-json.schema.json. Usage: validate_dump.py EDSC SCHEMA CORPUS_DIR..."""
 import json
 import pathlib
 import subprocess
@@ -10,14 +10,18 @@ import jsonschema
 
 
 def main() -> int:
-    edsc, schema_path, corpus = sys.argv[1], pathlib.Path(sys.argv[2]), pathlib.Path(sys.argv[3])
+    edsc, schema_path = sys.argv[1], pathlib.Path(sys.argv[2])
+    corpora = [pathlib.Path(a) for a in sys.argv[3:]]
     schema = json.loads(schema_path.read_text())
     jsonschema.Draft202012Validator.check_schema(schema)
     validator = jsonschema.Draft202012Validator(schema)
-    files = sorted(corpus.glob("*.eds"))
-    if not files:
-        print(f"no .eds files in {corpus}")
-        return 1
+    files = []
+    for corpus in corpora:
+        here = sorted(corpus.glob("*.eds"))
+        if not here:
+            print(f"no .eds files in {corpus}")
+            return 1
+        files += here
     failures = 0
     for f in files:
         run = subprocess.run([edsc, "dump", "--json", str(f)], capture_output=True)

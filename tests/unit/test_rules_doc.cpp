@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "diag/catalogue.hpp"
 #include "diag/rules_doc.hpp"
 
 namespace {
@@ -27,6 +28,18 @@ TEST(rules_doc, every_rule_has_a_unique_id_and_full_documentation) {
     EXPECT_FALSE(r.good.empty()) << r.name;
     EXPECT_NE(r.bad, r.good) << r.name;
     EXPECT_EQ(edsc::find_rule(r.name), r.id);
+  }
+}
+
+// docs/severity.md: an error must say why the file is certainly wrong; a
+// warning or note must not claim that certainty.
+TEST(rules_doc, exactly_the_error_rules_state_a_basis) {
+  for (const auto& r : edsc::all_rules()) {
+    if (r.default_level == edsc::severity::error) {
+      EXPECT_FALSE(edsc::basis_of(r.id).empty()) << r.name << " is an error without a basis in catalogue_basis.def";
+    } else {
+      EXPECT_TRUE(edsc::basis_of(r.id).empty()) << r.name << " is not an error but has a basis";
+    }
   }
 }
 
