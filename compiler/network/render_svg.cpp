@@ -35,7 +35,7 @@ std::string esc(std::string_view s) {
 
 // The label that fits `width` pixels at about 6.5 px per character.
 std::string fit(const std::string& full, const std::string& shorter, int width) {
-  const auto fits = [&](const std::string& s) { return static_cast<int>(s.size()) * 13 / 2 + 6 <= width; };
+  const auto fits = [&](const std::string& s) { return static_cast<int>(s.size()) * 13 / 2 + 3 <= width; };
   if (fits(full)) return full;
   if (fits(shorter)) return shorter;
   return {};
