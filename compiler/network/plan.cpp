@@ -52,7 +52,8 @@ std::string size_list(const std::set<std::uint32_t>& s) {
 
 class checker {
  public:
-  checker(checked_network& out, const check_options& options) : out_(out), options_(options) {}
+  checker(checked_network& out, const check_options& options, const eds_reader& read)
+      : out_(out), options_(options), read_(read) {}
 
   void run() {
     auto read = read_network(*out_.source);
@@ -121,7 +122,7 @@ class checker {
   eds_offer& load(const std::string& path) {
     if (auto it = offers_.find(path); it != offers_.end()) return it->second;
     auto& o = offers_[path];
-    auto r = io::read_source(path);
+    auto r = read_ ? read_(path) : io::read_source(path);
     if (auto* err = std::get_if<io::io_error>(&r)) {
       o.io_error = err->message;
       return o;
@@ -334,15 +335,17 @@ class checker {
 
   checked_network& out_;
   const check_options& options_;
+  const eds_reader& read_;
   std::map<std::string, eds_offer> offers_;
 };
 
 }  // namespace
 
-checked_network check_network(std::unique_ptr<source_file> source, const check_options& options) {
+checked_network check_network(std::unique_ptr<source_file> source, const check_options& options,
+                              const eds_reader& read) {
   checked_network out;
   out.source = std::move(source);
-  checker(out, options).run();
+  checker(out, options, read).run();
   std::stable_sort(out.diags.begin(), out.diags.end(),
                    [](const diagnostic& a, const diagnostic& b) { return a.where.begin < b.where.begin; });
   options.policy.apply(out.diags);

@@ -2,6 +2,7 @@
 // `edsc net check`: a network file read, each node's EDS analysed, every rule
 // of docs/network.md applied, and the plan the map is drawn from.
 #include <array>
+#include <functional>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -10,6 +11,7 @@
 
 #include "check/check_file.hpp"
 #include "diag/report.hpp"
+#include "io/read_file.hpp"
 #include "network/network.hpp"
 #include "network/profile.hpp"
 
@@ -57,8 +59,13 @@ struct checked_network {
   [[nodiscard]] bool has_errors() const { return totals.errors > 0; }
 };
 
-// Reads nothing but the EDS files the network names (relative to its folder).
-[[nodiscard]] checked_network check_network(std::unique_ptr<source_file> source, const check_options& options);
+// How the EDS files a network names are read (relative to its folder); the
+// fuzz target reads none.
+using eds_reader = std::function<io::read_result(const std::string& path)>;
+
+// Reads nothing but the EDS files the network names.
+[[nodiscard]] checked_network check_network(std::unique_ptr<source_file> source, const check_options& options,
+                                            const eds_reader& read = {});
 
 // All reports of a check, network file first (for the diagnostics renderers).
 [[nodiscard]] std::vector<file_report> take_reports(checked_network& c);

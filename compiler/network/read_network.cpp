@@ -146,6 +146,10 @@ class reader {
     }
     const auto* s = n->as_string();
     if (s == nullptr) return add(diag_id::net_key_type, region(n->source()), fmt::format("'{}' must be a string", key));
+    // Names end up in terminals, tags and file paths: no control characters.
+    for (const char c : s->get())
+      if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F)
+        return add(diag_id::net_key_type, region(n->source()), fmt::format("'{}' holds a control character", key));
     out = {s->get(), region(n->source()), true};
   }
 
