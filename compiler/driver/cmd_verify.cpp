@@ -39,6 +39,17 @@ std::unique_ptr<source_file> read_input(const std::string& path) {
   return std::move(std::get<std::unique_ptr<source_file>>(r));
 }
 
+// The capture's frames; none at all in a file with lines is bad input (exit 2).
+std::optional<verify::can_log> read_log(const source_file& capture, const std::string& path) {
+  auto log = verify::read_can_log(capture.text());
+  if (log.frames.empty() && !log.problems.empty()) {
+    print_error(fmt::format("{} holds no CAN frame in a known log format (first bad line {}: {})", path,
+                            log.problems.front().line, log.problems.front().message));
+    return std::nullopt;
+  }
+  return log;
+}
+
 int run_decode(const verify_cli& cli) {
   const auto log_file = read_input(cli.decode);
   if (!log_file) return exit_failure;
@@ -67,18 +78,10 @@ int run_verify_network(const verify_cli& cli) {
     print_reports(reports, totals, cli.format, cli.color, fmt::format("network {} (not verified)", cli.network));
     return exit_findings;
   }
-  const auto log = verify::read_can_log(capture->text());
-  if (log.frames.empty() && !log.problems.empty()) {
-    print_error(fmt::format("{} holds no CAN frame in a known log format (first bad line {}: {})", cli.capture,
-                            log.problems.front().line, log.problems.front().message));
-    return exit_failure;
-  }
-  const auto conv = verify::decode(log);
-  auto verdict = network::verify_network(*checked.result, log, conv);
-  for (const auto& p : log.problems)
-    verdict.capture_diags.insert(verdict.capture_diags.begin(),
-                                 make_diagnostic(diag_id::verify_log_line, p.where,
-                                                 fmt::format("capture line {} skipped: {}", p.line, p.message)));
+  const auto log = read_log(*capture, cli.capture);
+  if (!log) return exit_failure;
+  const auto conv = verify::decode(*log);
+  auto verdict = network::verify_network(*checked.result, *log, conv);
   options.policy.apply(verdict.capture_diags);
   options.policy.apply(verdict.network_diags);
   std::vector<file_report> reports;
@@ -116,15 +119,11 @@ int run_verify(const verify_cli& cli) {
   auto capture = read_input(cli.capture);
   if (!eds_file || !capture) return exit_failure;
   const auto eds = analyze(std::move(eds_file), options);
-  const auto log = verify::read_can_log(capture->text());
-  if (log.frames.empty() && !log.problems.empty()) {
-    print_error(fmt::format("{} holds no CAN frame in a known log format (first bad line {}: {})", cli.capture,
-                            log.problems.front().line, log.problems.front().message));
-    return exit_failure;
-  }
-  const auto conv = verify::decode(log);
+  const auto log = read_log(*capture, cli.capture);
+  if (!log) return exit_failure;
+  const auto conv = verify::decode(*log);
   const std::optional<unsigned> mac = cli.mac >= 0 ? std::optional<unsigned>(cli.mac) : std::nullopt;
-  auto result = verify::compare(log, conv, eds->dev, *eds->source, mac);
+  auto result = verify::compare(*log, conv, eds->dev, *eds->source, mac);
   for (const auto& e : result.eds_errors) print_error(fmt::format("{}: {}", cli.eds, e));
   if (!result.eds_errors.empty()) return exit_failure;
 

@@ -29,6 +29,9 @@ class verifier {
 
   network_verdict run() {
     v_.startup = !conv_.exchanges.empty();
+    for (const auto& p : log_.problems)
+      v_.capture_diags.push_back(make_diagnostic(diag_id::verify_log_line, p.where,
+                                                 fmt::format("capture line {} skipped: {}", p.line, p.message)));
     const std::set<unsigned> heard(conv_.nodes.begin(), conv_.nodes.end());
     std::set<unsigned> planned;
     for (const auto& n : p_.nodes) {

@@ -151,3 +151,18 @@ TEST_F(Net, VerifyWrongLengthsUnknownNodesAndIdentity) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST_F(Net, VerifyNetworkRefusesWhatIsNoCapture) {
+  const auto notlog = file("n.txt", "this is not a capture\nnor is this\n");
+  EXPECT_EQ(run_edsc({"verify", "--network", thesis.string(), "--capture", notlog.string()}).status, 2);
+  EXPECT_EQ(run_edsc({"verify", "--network", thesis.string()}).status, 2);
+  // A broken network is reported and not verified.
+  const auto net = file("b.toml", header() + node(70, "x", ""));
+  const auto r = run_edsc({"verify", "--network", net.string(), "--capture", prototypes.string(), "--color", "never"});
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.output.find("(not verified)"), std::string::npos) << r.output;
+}
+
+}  // namespace
