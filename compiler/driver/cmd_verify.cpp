@@ -10,8 +10,11 @@
 #include "check/check_file.hpp"
 #include "diag/render_text.hpp"
 #include "driver/commands.hpp"
+#include "driver/net_report.hpp"
 #include "driver/output.hpp"
 #include "io/read_file.hpp"
+#include "network/plan.hpp"
+#include "network/verify_network.hpp"
 #include "verify/compare.hpp"
 
 namespace edsc::driver {
@@ -20,7 +23,7 @@ namespace {
 
 
 struct verify_cli {
-  std::string eds, capture, decode;
+  std::string eds, capture, decode, network;
   int mac = -1;  // -1: every node heard
   std::vector<std::string> warning_flags;
   color_mode color = color_mode::auto_detect;
@@ -36,6 +39,17 @@ std::unique_ptr<source_file> read_input(const std::string& path) {
   return std::move(std::get<std::unique_ptr<source_file>>(r));
 }
 
+// The capture's frames; none at all in a file with lines is bad input (exit 2).
+std::optional<verify::can_log> read_log(const source_file& capture, const std::string& path) {
+  auto log = verify::read_can_log(capture.text());
+  if (log.frames.empty() && !log.problems.empty()) {
+    print_error(fmt::format("{} holds no CAN frame in a known log format (first bad line {}: {})", path,
+                            log.problems.front().line, log.problems.front().message));
+    return std::nullopt;
+  }
+  return log;
+}
+
 int run_decode(const verify_cli& cli) {
   const auto log_file = read_input(cli.decode);
   if (!log_file) return exit_failure;
@@ -46,8 +60,50 @@ int run_decode(const verify_cli& cli) {
   return log.frames.empty() && !log.problems.empty() ? exit_failure : exit_ok;
 }
 
+// Every node of a network judged from one capture (docs/network.md).
+int run_verify_network(const verify_cli& cli) {
+  if (!cli.eds.empty()) {
+    print_error("verify takes either an EDS file or --network, not both");
+    return exit_failure;
+  }
+  check_options options;
+  if (!apply_flags(cli.warning_flags, options)) return exit_failure;
+  auto net_file = read_input(cli.network);
+  auto capture = read_input(cli.capture);
+  if (!net_file || !capture) return exit_failure;
+  auto checked = network::check_network(std::move(net_file), options);
+  if (checked.has_errors() || !checked.result) {
+    const auto totals = checked.totals;
+    auto reports = network::take_reports(checked);
+    print_reports(reports, totals, cli.format, cli.color, fmt::format("network {} (not verified)", cli.network));
+    return exit_findings;
+  }
+  const auto log = read_log(*capture, cli.capture);
+  if (!log) return exit_failure;
+  const auto conv = verify::decode(*log);
+  auto verdict = network::verify_network(*checked.result, *log, conv);
+  options.policy.apply(verdict.capture_diags);
+  options.policy.apply(verdict.network_diags);
+  std::vector<file_report> reports;
+  reports.push_back({std::move(capture), std::move(verdict.capture_diags)});
+  reports.push_back({std::move(checked.source), std::move(verdict.network_diags)});
+  report_totals totals;
+  totals.files = 2;
+  for (const auto& r : reports) totals.add(r.diags);
+  print_reports(reports, totals, cli.format, cli.color, fmt::format("{} against network {}", cli.capture, cli.network),
+                network::render_verdict_table(verdict));
+  return totals.errors > 0 ? exit_findings : exit_ok;
+}
+
 int run_verify(const verify_cli& cli) {
   if (!cli.decode.empty()) return run_decode(cli);
+  if (!cli.network.empty()) {
+    if (cli.capture.empty()) {
+      print_error("verify --network needs --capture LOG");
+      return exit_failure;
+    }
+    return run_verify_network(cli);
+  }
   if (cli.eds.empty() || cli.capture.empty()) {
     print_error("verify needs an EDS file and --capture LOG (or --decode LOG alone)");
     return exit_failure;
@@ -63,15 +119,11 @@ int run_verify(const verify_cli& cli) {
   auto capture = read_input(cli.capture);
   if (!eds_file || !capture) return exit_failure;
   const auto eds = analyze(std::move(eds_file), options);
-  const auto log = verify::read_can_log(capture->text());
-  if (log.frames.empty() && !log.problems.empty()) {
-    print_error(fmt::format("{} holds no CAN frame in a known log format (first bad line {}: {})", cli.capture,
-                            log.problems.front().line, log.problems.front().message));
-    return exit_failure;
-  }
-  const auto conv = verify::decode(log);
+  const auto log = read_log(*capture, cli.capture);
+  if (!log) return exit_failure;
+  const auto conv = verify::decode(*log);
   const std::optional<unsigned> mac = cli.mac >= 0 ? std::optional<unsigned>(cli.mac) : std::nullopt;
-  auto result = verify::compare(log, conv, eds->dev, *eds->source, mac);
+  auto result = verify::compare(*log, conv, eds->dev, *eds->source, mac);
   for (const auto& e : result.eds_errors) print_error(fmt::format("{}: {}", cli.eds, e));
   if (!result.eds_errors.empty()) return exit_failure;
 
@@ -110,6 +162,8 @@ void register_verify(CLI::App& app, command_action& run) {
   cmd->add_option("--mac", cli->mac, "Compare only the node at this MAC ID (default: every node heard)")
       ->check(CLI::Range(0, 63).description(""))
       ->type_name("0..63");
+  cmd->add_option("--network", cli->network,
+                  "Judge every node of this network file (TOML, docs/network.md) instead of one EDS");
   cmd->add_option("--decode", cli->decode, "Print the decoded conversation of this log as a table, compare nothing");
   add_report_options(cmd, cli->color, cli->format, cli->warning_flags);
   cmd->callback([&run, cli] { run = [cli] { return run_verify(*cli); }; });

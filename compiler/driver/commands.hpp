@@ -22,5 +22,6 @@ void register_fmt(CLI::App& app, command_action& run);
 void register_new(CLI::App& app, command_action& run);
 void register_verify(CLI::App& app, command_action& run);
 void register_lsp(CLI::App& app, command_action& run);
+void register_net(CLI::App& app, command_action& run);
 
 }  // namespace edsc::driver

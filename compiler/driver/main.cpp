@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
     register_new(app, run);
     register_verify(app, run);
     register_lsp(app, run);
+    register_net(app, run);
     try {
       app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

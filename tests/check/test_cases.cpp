@@ -94,6 +94,12 @@ TEST(check_cases, every_rule_has_a_triggering_case) {
       "verify-identity-mismatch", "verify-minor-revision", "verify-product-name", "verify-connection-size",
       "verify-connection-not-in-eds", "verify-connection-missing", "verify-io-length", "verify-undecodable",
       "verify-log-line", "verify-no-node",
+      // Network files (TOML) and captures against them: tests/network/.
+      "net-syntax", "net-key-missing", "net-key-type", "net-key-unknown", "net-kind-unsupported",
+      "net-profile-unknown", "net-mac-range", "net-mac-duplicate", "net-eds-unreadable", "net-eds-errors",
+      "net-node-without-eds", "net-connection-not-offered", "net-connection-conflict", "net-size-not-allowed",
+      "net-image-overflow", "net-placement-overlap", "net-length-over-limit", "net-identity-duplicate",
+      "verify-net-missing", "verify-net-unknown", "verify-net-identity", "verify-net-io-length",
   };
   std::set<std::string_view> seen;
   for (const auto& path : case_files()) {

@@ -10,6 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "check/check_file.hpp"
 #include "cst/cst.hpp"
 #include "edit/analyze.hpp"
@@ -22,6 +24,9 @@
 #include "lsp/jsonrpc.hpp"
 #include "lsp/server.hpp"
 #include "lsp/transport.hpp"
+#include "network/layout.hpp"
+#include "network/plan.hpp"
+#include "network/render_map.hpp"
 #include "parse/parser.hpp"
 #include "source/source_file.hpp"
 
@@ -125,6 +130,33 @@ inline std::string lsp_body(std::string_view input) {
   }
   if (!broken.empty()) return broken;
   if (answers != expected) return "answers: " + std::to_string(answers) + ", expected " + std::to_string(expected);
+  return {};
+}
+
+// A network file: read, checked and, when it plans, laid out and rendered in
+// every map format. EDS files are not read (a fuzzed path could name any
+// file); nodes with one are reported unreadable, the rest are planned.
+inline std::string network_body(std::string_view input) {
+  const network::eds_reader no_files = [](const std::string& path) -> io::read_result {
+    return io::io_error{path + " is not read while fuzzing"};
+  };
+  auto c = network::check_network(std::make_unique<source_file>("fuzz.toml", std::string(input)), {}, no_files);
+  if (!c.result) return {};
+  const auto l = network::automap(*c.result);
+  for (const auto* image : {&l.input, &l.output}) {
+    for (std::size_t i = 0; i < image->blocks.size(); ++i) {
+      if (image->blocks[i].end() > image->capacity) return "a block past the slave area";
+      if (i > 0 && image->blocks[i - 1].end() > image->blocks[i].offset && l.problems.empty())
+        return "blocks overlap without a reported problem";
+    }
+  }
+  const network::map_input m{*c.result, l, "fuzz.toml"};
+  if (!nlohmann::json::accept(network::render_map_json(m))) return "map JSON does not parse";
+  (void)network::render_map_text(m);
+  (void)network::render_map_svg(m);
+  (void)network::render_map_csv(m);
+  (void)network::render_map_c(m);
+  (void)network::render_map_modbus(m);
   return {};
 }
 

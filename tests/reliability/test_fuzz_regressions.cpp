@@ -35,12 +35,13 @@ TEST(FuzzRegressions, Fmt) { replay("fmt", fmt_body); }
 TEST(FuzzRegressions, Edit) { replay("edit", edit_body); }
 TEST(FuzzRegressions, Header) { replay("header", header_body); }
 TEST(FuzzRegressions, Lsp) { replay("lsp", lsp_body); }
+TEST(FuzzRegressions, Network) { replay("network", network_body); }
 
 // Every body also runs on a few shapes the fuzzers start from.
 TEST(FuzzRegressions, Seeds) {
   for (const std::string& input : {std::string(), std::string("["), std::string("[File]\nA = {{{{"),
                                   std::string("\xff\xfe\0", 3)}) {
-    const body bodies[] = {parse_body, check_body, fmt_body, edit_body, header_body, lsp_body};
+    const body bodies[] = {parse_body, check_body, fmt_body, edit_body, header_body, lsp_body, network_body};
     for (const body run : bodies) EXPECT_EQ(run(input), "");
   }
 }
