@@ -119,7 +119,8 @@ std::string render_svg(const bit_map& m) {
       R"(role="img" aria-label="bit map of )",
       width, height);
   append_escaped(out, m.title);
-  out += "\">" + svg_style(m.id);
+  out += "\">";
+  out += svg_style(m.id);
   out += fmt::format(R"(<defs><pattern id="hatch-{}" width="6" height="6" patternUnits="userSpaceOnUse" )"
                      R"x(patternTransform="rotate(45)"><rect width="6" height="6" fill="#f1f2f4" rx="0"/>)x"
                      R"(<line x1="0" y1="0" x2="0" y2="6" stroke="#c9ccd1" stroke-width="2"/></pattern></defs>)",

@@ -15,4 +15,10 @@ void append_escaped(std::string& out, std::string_view text);
 // replaced; line breaks become <br>.
 [[nodiscard]] std::string md_escaped(std::string_view text);
 
+// Appends `item` to the list in `out`, `sep` between items.
+inline void join(std::string& out, std::string_view sep, std::string_view item) {
+  if (!out.empty()) out += sep;
+  out += item;
+}
+
 }  // namespace edsc::doc

@@ -171,20 +171,21 @@ std::string md_index(const std::vector<library_entry>& entries,
     out += "## Identity collisions\n\nSame vendor, type, code and revision, different contents:\n\n";
     for (const auto& c : collisions) {
       out += "-";
-      for (const auto i : c) out += " [" + md_escaped(entries[i].source) + "](" + entries[i].page + ")";
+      for (const auto i : c) out += fmt::format(" [{}]({})", md_escaped(entries[i].source), entries[i].page);
       out += "\n";
     }
     out += "\n";
   }
   for (const auto& [vendor, rows] : by_vendor(entries)) {
-    out += "## " + md_escaped(vendor) + "\n\n| Product | Type | Code | Revision | Networks | File | Errors | Warnings |\n"
+    out += fmt::format("## {}\n\n", md_escaped(vendor));
+    out += "| Product | Type | Code | Revision | Networks | File | Errors | Warnings |\n"
            "|---|---|---|---|---|---|---|---|\n";
     for (const auto i : rows) {
       const auto& e = entries[i];
       const auto& s = e.sum;
       const auto product = e.unreadable ? md_escaped(e.problem)
-                                        : "[" + md_escaped(s.product.empty() ? "(no ProdName)" : s.product) + "](" +
-                                              e.page + ")";
+                                        : fmt::format("[{}]({})", md_escaped(s.product.empty() ? "(no ProdName)" : s.product),
+                                                      e.page);
       out += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", product, md_escaped(s.type),
                          s.identified ? std::to_string(s.product_code) : "", md_escaped(s.revision),
                          md_escaped(s.networks), md_escaped(e.source), s.errors, s.warnings);

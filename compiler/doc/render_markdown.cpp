@@ -11,7 +11,7 @@ namespace {
 void table_md(std::string& out, const table& t) {
   if (t.empty()) return;
   out += "|";
-  for (const auto& h : t.head) out += " " + md_escaped(h) + " |";
+  for (const auto& h : t.head) out += fmt::format(" {} |", md_escaped(h));
   out += "\n|";
   for (std::size_t i = 0; i < t.head.size(); ++i) out += "---|";
   out += "\n";
@@ -20,7 +20,7 @@ void table_md(std::string& out, const table& t) {
     for (const auto& c : row) line = line != 0 ? line : c.line;
     out += "|";
     for (std::size_t i = 0; i < row.size(); ++i) {
-      out += " " + md_escaped(row[i].text);
+      out += fmt::format(" {}", md_escaped(row[i].text));
       if (i == 0 && line != 0) out += fmt::format(" (line {})", line);
       out += " |";
     }
@@ -36,10 +36,10 @@ void heading(std::string& out, const char* title) { out += fmt::format("## {}\n\
 markdown_page render_markdown(const sheet& s, const std::string& svg_stem, const page_options& opt) {
   markdown_page page;
   auto& out = page.text;
-  out += "# " + md_escaped(s.title) + "\n\n";
-  if (!opt.index_href.empty()) out += "[Library](" + md_escaped(opt.index_href) + ") · ";
-  out += "EDS datasheet of `" + md_escaped(s.sum.file) + "`";
-  if (!s.subtitle.empty()) out += " · " + md_escaped(s.subtitle);
+  out += fmt::format("# {}\n\n", md_escaped(s.title));
+  if (!opt.index_href.empty()) out += fmt::format("[Library]({}) · ", md_escaped(opt.index_href));
+  out += fmt::format("EDS datasheet of `{}`", md_escaped(s.sum.file));
+  if (!s.subtitle.empty()) out += fmt::format(" · {}", md_escaped(s.subtitle));
   out += fmt::format("\n\n**{} error{}, {} warning{}** reported by edsc (see Diagnostics).\n\n", s.sum.errors,
                      s.sum.errors == 1 ? "" : "s", s.sum.warnings, s.sum.warnings == 1 ? "" : "s");
   heading(out, "Identity");
@@ -57,15 +57,15 @@ markdown_page render_markdown(const sheet& s, const std::string& svg_stem, const
     for (const auto& m : s.maps) {
       const auto file = fmt::format("{}.{}.svg", svg_stem, m.id);
       page.svgs.emplace_back(file, render_svg(m));
-      out += "### " + md_escaped(m.title) + "\n\n" + md_escaped(m.caption) + "\n\n";
-      if (!m.note.empty()) out += "> " + md_escaped(m.note) + "\n\n";
+      out += fmt::format("### {}\n\n{}\n\n", md_escaped(m.title), md_escaped(m.caption));
+      if (!m.note.empty()) out += fmt::format("> {}\n\n", md_escaped(m.note));
       out += fmt::format("![bit map of {}]({})\n\n", md_escaped(m.title), file);
       out += "| Bits | Name | Member |\n|---|---|---|\n";
       for (const auto& b : m.blocks) {
         out += fmt::format("| {}.{}", b.first / 8, b.first % 8);
         if (b.bits > 1) out += fmt::format(" – {}.{}", (b.first + b.bits - 1) / 8, (b.first + b.bits - 1) % 8);
-        out += " | " + (b.padding ? "*" + md_escaped(b.label) + "*" : md_escaped(b.label)) + " | " +
-               md_escaped(b.detail) + fmt::format(" ({} bit{}) |\n", b.bits, b.bits == 1 ? "" : "s");
+        const auto label = b.padding ? fmt::format("*{}*", md_escaped(b.label)) : md_escaped(b.label);
+        out += fmt::format(" | {} | {} ({} bit{}) |\n", label, md_escaped(b.detail), b.bits, b.bits == 1 ? "" : "s");
       }
       out += "\n";
     }

@@ -14,10 +14,17 @@ namespace detail {
 
 std::string utf8(std::string_view s) { return emit::detail::to_utf8(s); }
 
+std::string trimmed(std::string_view t) {
+  // Vendors pad names with blanks; a reader never needs them.
+  while (!t.empty() && (t.front() == ' ' || t.front() == '\t')) t.remove_prefix(1);
+  while (!t.empty() && (t.back() == ' ' || t.back() == '\t')) t.remove_suffix(1);
+  return utf8(t);
+}
+
 std::string param_name(const model::device& dev, std::uint32_t target) {
   if (target >= dev.params.size()) return {};
   const auto& p = dev.params[target];
-  return p.name.ok() ? utf8(p.name.text) : std::string{};
+  return p.name.ok() ? trimmed(p.name.text) : std::string{};
 }
 
 std::uint32_t reader::section_line(std::uint32_t section) const {
@@ -27,7 +34,7 @@ std::uint32_t reader::section_line(std::uint32_t section) const {
 
 std::string reader::text(const model::value& v) const {
   if (!v.present()) return {};
-  if (v.ok() && v.kind == model::value_kind::string) return utf8(v.text);
+  if (v.ok() && v.kind == model::value_kind::string) return trimmed(v.text);
   if (v.ok() && v.kind == model::value_kind::real) return fmt::format("{}", v.real);
   return utf8(src.text(v.from.where));
 }
@@ -52,7 +59,7 @@ std::string reader::ref_text(const model::reference& r, bool with_name) const {
     case ref_kind::proxy_assem_exa:
     case ref_kind::proxied_assem_exa:
       if (r.target < dev.assemblies.size() && dev.assemblies[r.target].name.ok())
-        name = utf8(dev.assemblies[r.target].name.text);
+        name = trimmed(dev.assemblies[r.target].name.text);
       break;
     default:
       break;
@@ -86,7 +93,7 @@ std::string reader::path_text(const model::value& v) const {
   if (p == nullptr) return text(v);
   if (p->symbolic) return "a tag name the configuration tool asks for";
   std::string out;
-  for (const auto& s : p->segments) out += (out.empty() ? "" : ", ") + segment_text(*this, s);
+  for (const auto& s : p->segments) join(out, ", ", segment_text(*this, s));
   if (!p->complete) out += " (incomplete)";
   return out;
 }
@@ -105,7 +112,7 @@ std::string networks_text(std::uint8_t nets) {
       {model::net_controlnet, "ControlNet"}, {model::net_componet, "CompoNet"}, {model::net_modbus, "Modbus"}};
   std::string out;
   for (const auto& [bit, name] : names)
-    if ((nets & bit) != 0) out += (out.empty() ? "" : ", ") + std::string(name);
+    if ((nets & bit) != 0) join(out, ", ", std::string(name));
   return out;
 }
 
@@ -196,7 +203,7 @@ void build_groups(const reader& r, sheet& s) {
     std::string members;
     for (const auto& m : g.members) {
       const auto* ref = m.as_ref();
-      members += (members.empty() ? "" : "\n") + (ref != nullptr ? r.ref_text(*ref) : r.text(m));
+      join(members, "\n", (ref != nullptr ? r.ref_text(*ref) : r.text(m)));
     }
     s.groups.rows.push_back({{fmt::format("Group{}", g.number), r.line(g.from), cell_style::code},
                              r.at(g.name),
@@ -219,7 +226,7 @@ void build_capacity(const reader& r, sheet& s) {
   s.capacity.head = {"Entry", "Value"};
   for (const auto& st : r.dev.cap.settings) {
     std::string v;
-    for (const auto& f : st.fields) v += (v.empty() ? "" : ", ") + r.text(f);
+    for (const auto& f : st.fields) join(v, ", ", r.text(f));
     s.capacity.rows.push_back({{utf8(st.keyword), r.line(st.from), cell_style::code}, {v, 0, cell_style::number}});
   }
   for (const auto& t : r.dev.cap.tspecs) {
@@ -260,7 +267,7 @@ sheet build_sheet(const analysis& a) {
   build_summary(r, a, s.sum);
   s.title = !s.sum.product.empty() ? s.sum.product : s.sum.file;
   s.subtitle = s.sum.vendor;
-  if (!s.sum.type.empty()) s.subtitle += (s.subtitle.empty() ? "" : " · ") + s.sum.type;
+  if (!s.sum.type.empty()) join(s.subtitle, " · ", s.sum.type);
   build_identity(r, s);
   detail::build_connections(r, s);
   detail::build_maps(r, s);

@@ -19,7 +19,7 @@ std::string io_mask_text(std::uint64_t mask) {
   static constexpr const char* names[] = {"poll", "strobe", "COS", "cyclic", "multicast poll"};
   std::string out;
   for (int b = 0; b < 5; ++b)
-    if ((mask & (1u << b)) != 0) out += (out.empty() ? "" : ", ") + std::string(names[b]);
+    if ((mask & (1u << b)) != 0) join(out, ", ", std::string(names[b]));
   return out.empty() ? "none" : out;
 }
 
@@ -85,27 +85,27 @@ void io_data_rows(const reader& r, const model::io_info& io, const char* prefix,
 std::string trigger_text(const model::trigger_transport& t) {
   std::string classes;
   for (int c = 0; c < 16; ++c)
-    if ((t.transport_classes & (1u << c)) != 0) classes += (classes.empty() ? "" : ", ") + std::to_string(c);
+    if ((t.transport_classes & (1u << c)) != 0) join(classes, ", ", std::to_string(c));
   std::vector<std::string> parts;
   parts.push_back(classes.empty() ? "no transport class" : "class " + classes);
   std::string trig;
   for (auto [on, name] : {std::pair{t.trigger_cyclic, "cyclic"}, std::pair{t.trigger_cos, "change of state"},
                           std::pair{t.trigger_application, "application"}})
-    if (on) trig += (trig.empty() ? "" : ", ") + std::string(name);
+    if (on) join(trig, ", ", std::string(name));
   if (!trig.empty()) parts.push_back(trig);
   for (auto [on, name] : {std::pair{t.exclusive_owner, "exclusive owner"}, std::pair{t.input_only, "input only"},
                           std::pair{t.listen_only, "listen only"}, std::pair{t.redundant_owner, "redundant owner"}})
     if (on) parts.push_back(name);
   if (t.server) parts.push_back("server");
   std::string out;
-  for (const auto& p : parts) out += (out.empty() ? "" : "\n") + p;
+  for (const auto& p : parts) join(out, "\n", p);
   return out;
 }
 
 std::string direction_text(const model::direction_params& d) {
   std::string out;
   auto add = [&](bool on, const char* word) {
-    if (on) out += (out.empty() ? "" : ", ") + std::string(word);
+    if (on) join(out, ", ", std::string(word));
   };
   add(d.type_p2p, "point-to-point");
   add(d.type_multicast, "multicast");
@@ -126,9 +126,12 @@ std::string flow_text(const reader& r, std::uint32_t size, std::uint32_t instanc
                       const value& rpi, const model::direction_params* bits) {
   std::string out = bytes_text(size);
   if (instance != 0) out += fmt::format(", assembly {}", instance);
-  if (const auto* ref = format.as_ref()) out += "\n" + r.ref_text(*ref);
+  if (const auto* ref = format.as_ref()) out += fmt::format("\n{}", r.ref_text(*ref));
   if (rpi.present()) out += fmt::format("\nRPI {} µs", r.text(rpi));
-  if (bits != nullptr) out += "\n" + direction_text(*bits);
+  if (bits != nullptr) {
+    out += "\n";
+    out += direction_text(*bits);
+  }
   return out;
 }
 

@@ -64,7 +64,7 @@ std::string flags_text(const model::param& p) {
   const auto d = p.descriptor.as_uint();
   std::string out;
   auto add = [&](std::uint64_t bit, const char* word) {
-    if ((d & bit) != 0) out += (out.empty() ? "" : "\n") + std::string(word);
+    if ((d & bit) != 0) join(out, "\n", std::string(word));
   };
   add(model::pd_read_only, "read-only");
   add(model::pd_monitor, "monitor");
@@ -79,10 +79,13 @@ std::string enumeration_text(const reader& r, const model::param& p) {
   std::string out;
   if (p.enum_index != model::none && p.enum_index < r.dev.enums.size()) {
     for (const auto& e : r.dev.enums[p.enum_index].pairs)
-      out += (out.empty() ? "" : "\n") + r.text(e.val) + " = " + r.text(e.text);
+      join(out, "\n", r.text(e.val) + " = " + r.text(e.text));
   } else if (p.enum_par_index != model::none && p.enum_par_index < r.dev.enum_pars.size()) {
     // Which value the first string names is unconfirmed: list them in order.
-    for (const auto& e : r.dev.enum_pars[p.enum_par_index].strings) out += (out.empty() ? "" : "\n") + ("• " + r.text(e));
+    for (const auto& e : r.dev.enum_pars[p.enum_par_index].strings) {
+      join(out, "\n", "• ");
+      out += r.text(e);
+    }
   }
   return out;
 }

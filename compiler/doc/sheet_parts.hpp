@@ -2,6 +2,7 @@
 // Internal to the datasheet builder: reading model values as display text.
 #include <string>
 
+#include "doc/markup.hpp"
 #include "doc/sheet.hpp"
 
 namespace edsc::doc::detail {
@@ -27,6 +28,7 @@ struct reader {
 };
 
 [[nodiscard]] std::string utf8(std::string_view s);
+[[nodiscard]] std::string trimmed(std::string_view s);  // UTF-8, without surrounding blanks
 [[nodiscard]] std::string param_name(const model::device& dev, std::uint32_t target);
 
 void build_params(const reader& r, sheet& s);

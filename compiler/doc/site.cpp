@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "doc/markup.hpp"
 #include "io/write_file.hpp"
 
 namespace edsc::doc {
@@ -65,7 +66,7 @@ std::string page_name(const std::string& file, const std::string& base, page_for
   auto rel = base.empty() ? fs::path(file).filename() : fs::path(file).lexically_relative(base);
   if (rel.empty() || rel.string().rfind("..", 0) == 0) rel = fs::path(file).filename();
   std::string name;
-  for (const auto& part : rel) name += (name.empty() ? "" : "__") + part.string();
+  for (const auto& part : rel) join(name, "__", part.string());
   const auto dot = name.rfind('.');
   if (dot != std::string::npos && dot > 0) name.resize(dot);
   return name + extension(format);
