@@ -92,6 +92,11 @@ site_result build_site(const std::vector<std::string>& files, const std::string&
     taken.insert(name);
     names[i] = name;
   }
+  std::vector<std::string> names_in_library(files.size());
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    const auto rel = base.empty() ? fs::path(files[i]) : fs::path(files[i]).lexically_relative(base);
+    names_in_library[i] = rel.empty() || rel.string().rfind("..", 0) == 0 ? files[i] : rel.generic_string();
+  }
   std::vector<std::vector<std::string>> failures(files.size());
   std::atomic<std::size_t> next{0};
   auto work = [&] {
@@ -104,6 +109,8 @@ site_result build_site(const std::vector<std::string>& files, const std::string&
         write_page(page, fs::path(out_dir) / names[i], failures[i]);
         page.entry.page = names[i];
       }
+      // The index names files as they sit in the library, not by the path given.
+      if (!page.entry.unreadable) page.entry.source = names_in_library[i];
       result.entries[i] = std::move(page.entry);
     }
   };
