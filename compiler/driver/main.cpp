@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
     register_verify(app, run);
     register_lsp(app, run);
     register_net(app, run);
+    register_doc(app, run);
     try {
       app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

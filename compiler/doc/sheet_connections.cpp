@@ -1,0 +1,172 @@
+// Connections on the datasheet: DeviceNet [IO_Info] per predefined connection
+// type and data set, EtherNet/IP ConnectionN with its bit fields in words.
+// Sizes and assembly instances come from the C header's facts, so the page and
+// the header never disagree.
+#include <fmt/format.h>
+
+#include "doc/sheet_parts.hpp"
+#include "emit/header_view.hpp"
+
+namespace edsc::doc::detail {
+
+namespace {
+
+using model::value;
+
+constexpr const char* io_type_names[] = {"Poll", "Bit-strobe", "Change of state", "Cyclic"};
+
+std::string io_mask_text(std::uint64_t mask) {
+  static constexpr const char* names[] = {"poll", "strobe", "COS", "cyclic", "multicast poll"};
+  std::string out;
+  for (int b = 0; b < 5; ++b)
+    if ((mask & (1u << b)) != 0) join(out, ", ", std::string(names[b]));
+  return out.empty() ? "none" : out;
+}
+
+std::string bytes_text(std::uint64_t n) { return fmt::format("{} byte{}", n, n == 1 ? "" : "s"); }
+
+// "Input1 (Sensor), 3 bytes" for a default input/output reference.
+std::string data_ref_text(const reader& r, const model::io_info& io, const value& v, bool output) {
+  const auto* ref = v.as_ref();
+  if (ref == nullptr) return v.is_integer() && v.as_uint() == 0 ? "none" : r.text(v);
+  const auto label = fmt::format("{}{}", output ? "Output" : "Input", ref->number);
+  const auto& list = output ? io.outputs : io.inputs;
+  if (!ref->resolved() || ref->target >= list.size()) return label + " (missing)";
+  const auto& d = list[ref->target];
+  const auto name = r.text(d.name);
+  return fmt::format("{}{}, {}", label, name.empty() ? "" : " \"" + name + "\"",
+                     d.size.is_integer() ? bytes_text(d.size.as_uint()) : "size unknown");
+}
+
+void devicenet_rows(const reader& r, const emit::devicenet_facts& dn, sheet& s) {
+  const auto& io = r.dev.io;
+  auto& t = s.devicenet_io;
+  t.head = {"Connection type", "Supported", "Default", "Produces (input)", "Consumes (output)", "Compatible with"};
+  for (std::size_t i = 0; i < dn.types.size(); ++i) {
+    const model::io_connection_info* info = nullptr;
+    for (const auto& c : io.connections)
+      if (static_cast<std::size_t>(c.type) == i && info == nullptr) info = &c;
+    const bool in_default = io.default_mask.is_integer() && (io.default_mask.as_uint() & (1u << i)) != 0;
+    std::vector<cell> row{{io_type_names[i], info != nullptr ? r.line(info->from) : 0},
+                          {dn.types[i].supported ? "yes" : "no", 0, cell_style::flags},
+                          {in_default ? "yes" : "", r.line(io.default_mask.from), cell_style::flags}};
+    if (info != nullptr) {
+      row.push_back({data_ref_text(r, io, info->default_input, false)});
+      row.push_back({data_ref_text(r, io, info->default_output, true)});
+      row.push_back({info->mask.is_integer() ? io_mask_text(info->mask.as_uint()) : r.text(info->mask)});
+    } else {
+      row.insert(row.end(), 3, cell{"", 0, cell_style::muted});
+    }
+    t.rows.push_back(std::move(row));
+  }
+}
+
+void io_data_rows(const reader& r, const model::io_info& io, const char* prefix, sheet& s) {
+  auto& t = s.io_data;
+  t.head = {"Data", "Name", "Size", "Significant bits", "Connection types", "Path", "Help"};
+  for (const auto* list : {&io.inputs, &io.outputs}) {
+    for (const auto& d : *list) {
+      const auto sig = d.significant_bits.is_integer() && d.significant_bits.as_uint() == 0
+                           ? std::string("all")
+                           : r.text(d.significant_bits);
+      t.rows.push_back({{fmt::format("{}{}{}", prefix, d.output ? "Output" : "Input", d.number), r.line(d.from),
+                         cell_style::code},
+                        r.at(d.name),
+                        {d.size.is_integer() ? bytes_text(d.size.as_uint()) : r.text(d.size), r.line(d.size.from),
+                         cell_style::number},
+                        {sig, r.line(d.significant_bits.from), cell_style::number},
+                        {d.mask.is_integer() ? io_mask_text(d.mask.as_uint()) : r.text(d.mask), r.line(d.mask.from)},
+                        {r.path_text(d.path), r.line(d.path.from)},
+                        r.at(d.help)});
+    }
+  }
+}
+
+std::string trigger_text(const model::trigger_transport& t) {
+  std::string classes;
+  for (int c = 0; c < 16; ++c)
+    if ((t.transport_classes & (1u << c)) != 0) join(classes, ", ", std::to_string(c));
+  std::vector<std::string> parts;
+  parts.push_back(classes.empty() ? "no transport class" : "class " + classes);
+  std::string trig;
+  for (auto [on, name] : {std::pair{t.trigger_cyclic, "cyclic"}, std::pair{t.trigger_cos, "change of state"},
+                          std::pair{t.trigger_application, "application"}})
+    if (on) join(trig, ", ", std::string(name));
+  if (!trig.empty()) parts.push_back(trig);
+  for (auto [on, name] : {std::pair{t.exclusive_owner, "exclusive owner"}, std::pair{t.input_only, "input only"},
+                          std::pair{t.listen_only, "listen only"}, std::pair{t.redundant_owner, "redundant owner"}})
+    if (on) parts.push_back(name);
+  if (t.server) parts.push_back("server");
+  std::string out;
+  for (const auto& p : parts) join(out, "\n", p);
+  return out;
+}
+
+std::string direction_text(const model::direction_params& d) {
+  std::string out;
+  auto add = [&](bool on, const char* word) {
+    if (on) join(out, ", ", std::string(word));
+  };
+  add(d.type_p2p, "point-to-point");
+  add(d.type_multicast, "multicast");
+  add(d.type_null, "null");
+  add(d.fixed, "fixed");
+  add(d.variable, "variable");
+  add(d.prio_scheduled, "scheduled");
+  add(d.prio_high, "high priority");
+  add(d.prio_low, "low priority");
+  static constexpr const char* formats[] = {"modeless", "zero-length", "format 2", "heartbeat",
+                                            "32-bit run/idle header", "CIP Safety", "format 6", "format 7"};
+  add(true, formats[d.real_time_format & 7]);
+  return out;
+}
+
+// One direction of a connection: size, what the format names, RPI, bits.
+std::string flow_text(const reader& r, std::uint32_t size, std::uint32_t instance, const value& format,
+                      const value& rpi, const model::direction_params* bits) {
+  std::string out = bytes_text(size);
+  if (instance != 0) out += fmt::format(", assembly {}", instance);
+  if (const auto* ref = format.as_ref()) out += fmt::format("\n{}", r.ref_text(*ref));
+  if (rpi.present()) out += fmt::format("\nRPI {} µs", r.text(rpi));
+  if (bits != nullptr) {
+    out += "\n";
+    out += direction_text(*bits);
+  }
+  return out;
+}
+
+void eip_rows(const reader& r, const std::vector<emit::eip_connection_facts>& facts, sheet& s) {
+  auto& t = s.connections;
+  t.head = {"Connection", "Name", "Trigger and transport", "O→T (to the device)", "T→O (from the device)",
+            "Configuration", "Path"};
+  for (const auto& c : r.dev.connections) {
+    const emit::eip_connection_facts* f = nullptr;
+    for (const auto& x : facts)
+      if (x.number == c.number && f == nullptr) f = &x;
+    if (f == nullptr) continue;  // a repeated number: the header's first one wins, and so does the page
+    std::string config = f->config_size != 0 || f->config_instance != 0 ? bytes_text(f->config_size) : "";
+    if (f->config_instance != 0) config += fmt::format(", assembly {}", f->config_instance);
+    t.rows.push_back({{fmt::format("Connection{}", c.number), r.line(c.from), cell_style::code},
+                      r.at(c.name),
+                      {c.decoded ? trigger_text(c.tt) : r.text(c.trigger), r.line(c.trigger.from)},
+                      {flow_text(r, f->output_size, f->output_instance, c.ot_format, c.ot_rpi, c.decoded ? &c.cp.ot : nullptr),
+                       r.line(c.ot_size.from)},
+                      {flow_text(r, f->input_size, f->input_instance, c.to_format, c.to_rpi, c.decoded ? &c.cp.to : nullptr),
+                       r.line(c.to_size.from)},
+                      {config},
+                      {r.path_text(c.path), r.line(c.path.from)}});
+  }
+}
+
+}  // namespace
+
+void build_connections(const reader& r, sheet& s) {
+  std::vector<emit::header_issue> ignored;  // the findings panel says it better
+  const auto facts = emit::collect_facts(r.dev, r.src, ignored);
+  if (facts.devicenet) devicenet_rows(r, *facts.devicenet, s);
+  io_data_rows(r, r.dev.io, "", s);
+  io_data_rows(r, r.dev.variant_io, "Variant ", s);
+  if (!r.dev.connections.empty()) eip_rows(r, facts.connections, s);
+}
+
+}  // namespace edsc::doc::detail

@@ -1,0 +1,119 @@
+// `edsc doc FILE -o device.html` and `edsc doc DIR -o site/`: datasheets a
+// person can read (docs/doc.md).
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "doc/site.hpp"
+#include "driver/commands.hpp"
+#include "driver/output.hpp"
+#include "io/collect_inputs.hpp"
+#include "io/write_file.hpp"
+
+namespace edsc::driver {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct doc_cli {
+  std::string input, output;
+  doc::page_format format = doc::page_format::html;
+  unsigned jobs = 0;  // 0: one per core
+};
+
+int status_of(const std::vector<doc::library_entry>& entries, bool failed) {
+  if (failed) return exit_failure;
+  for (const auto& e : entries)
+    if (e.unreadable) return exit_failure;
+  for (const auto& e : entries)
+    if (e.sum.errors > 0) return exit_findings;
+  return exit_ok;
+}
+
+int run_one(const doc_cli& cli) {
+  const bool to_stdout = cli.output == "-";
+  if (to_stdout && cli.format == doc::page_format::markdown) {
+    print_error("--format=md writes SVG files beside the page: give -o a file name");
+    return exit_failure;
+  }
+  const auto stem = fs::path(cli.output).stem().string();
+  auto page = doc::render_file(cli.input, cli.format, stem, {});
+  if (page.entry.unreadable) {
+    print_error(page.entry.problem);
+    return exit_failure;
+  }
+  if (to_stdout) {
+    if (!write_all(stdout, page.text)) return exit_failure;
+    std::fflush(stdout);
+  } else {
+    bool failed = false;
+    const auto dir = fs::path(cli.output).parent_path();
+    for (const auto& [name, content] : page.files) {
+      if (auto err = io::write_atomically((dir / name).string(), content)) {
+        print_error(err->message);
+        failed = true;
+      }
+    }
+    if (auto err = io::write_atomically(cli.output, page.text)) {
+      print_error(err->message);
+      failed = true;
+    }
+    if (failed) return exit_failure;
+  }
+  return status_of({page.entry}, false);
+}
+
+int run_site(const doc_cli& cli) {
+  const auto inputs = io::collect_inputs({cli.input});
+  for (const auto& e : inputs.errors) print_error(e.message);
+  if (inputs.files.empty()) return exit_failure;
+  const unsigned jobs = cli.jobs > 0 ? cli.jobs : std::max(1u, std::thread::hardware_concurrency());
+  const auto site = doc::build_site(inputs.files, cli.input, cli.output, cli.format, jobs);
+  for (const auto& e : site.entries)
+    if (e.unreadable) print_error(e.problem);
+  for (const auto& f : site.failures) print_error(f);
+  std::size_t errors = 0, warnings = 0;
+  for (const auto& e : site.entries) {
+    errors += e.sum.errors;
+    warnings += e.sum.warnings;
+  }
+  const auto collisions = doc::identity_collisions(site.entries);
+  write_all(stderr, fmt::format("{} page{} written to {} ({} errors, {} warnings{})\n", site.entries.size(),
+                                site.entries.size() == 1 ? "" : "s", cli.output, errors, warnings,
+                                collisions.empty() ? "" : fmt::format(", {} identity collisions", collisions.size())));
+  return status_of(site.entries, !site.failures.empty() || !inputs.errors.empty());
+}
+
+int run_doc(const doc_cli& cli) {
+  std::error_code ec;
+  if (fs::is_directory(cli.input, ec)) {
+    if (cli.output == "-") {
+      print_error("a folder gives a site of pages: give -o a folder");
+      return exit_failure;
+    }
+    return run_site(cli);
+  }
+  return run_one(cli);
+}
+
+}  // namespace
+
+void register_doc(CLI::App& app, command_action& run) {
+  auto cli = std::make_shared<doc_cli>();
+  auto* cmd = app.add_subcommand("doc", "Write a readable datasheet of an EDS file, or a site for a folder (docs/doc.md)");
+  cmd->add_option("input", cli->input, "The EDS file, or a folder searched recursively for *.eds")->required();
+  cmd->add_option("-o,--output", cli->output, "The page to write ('-' for standard output), or the site's folder")
+      ->required();
+  const std::map<std::string, doc::page_format> formats{{"html", doc::page_format::html},
+                                                        {"md", doc::page_format::markdown}};
+  cmd->add_option("--format", cli->format, "html (default) or md (Markdown, bit maps as SVG files beside it)")
+      ->transform(CLI::CheckedTransformer(formats, CLI::ignore_case));
+  cmd->add_option("-j,--jobs", cli->jobs, "Files documented in parallel (default: one per core)");
+  cmd->callback([&run, cli] { run = [cli] { return run_doc(*cli); }; });
+}
+
+}  // namespace edsc::driver
