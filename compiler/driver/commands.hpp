@@ -21,5 +21,6 @@ void register_fix(CLI::App& app, command_action& run);
 void register_fmt(CLI::App& app, command_action& run);
 void register_new(CLI::App& app, command_action& run);
 void register_verify(CLI::App& app, command_action& run);
+void register_diff(CLI::App& app, command_action& run);
 
 }  // namespace edsc::driver

@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
     register_fmt(app, run);
     register_new(app, run);
     register_verify(app, run);
+    register_diff(app, run);
     try {
       app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
