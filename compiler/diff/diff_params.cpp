@@ -39,6 +39,10 @@ std::string label(const param& p) {
   return name.empty() ? fmt::format("Param{}", p.number) : fmt::format("Param{} \"{}\"", p.number, brief(name, 40));
 }
 
+bool unsigned_bits(const schema::cip_type_info& t) {
+  return t.cls == schema::type_class::unsigned_int || t.cls == schema::type_class::bit_string;
+}
+
 std::optional<double> numeric(const value& v) {
   if (!v.ok() || (v.kind != model::value_kind::integer && v.kind != model::value_kind::real)) return std::nullopt;
   return v.as_real();
@@ -176,8 +180,21 @@ void compare_pair(context& c, const param& p, const param& q) {
     d.after = at(q.from, fmt::format("Param{}", q.number));
   }
   field(p.name, q.name, impact::cosmetic, "param-name", "name", "tools show the new name; the instance is the same");
-  field(p.data_type, q.data_type, impact::breaking, "param-type", "data type",
-        "a configured value is sent in the old type's encoding and is refused or misread");
+  // BYTE and USINT (WORD and UINT...) put the same bytes on the wire.
+  const bool same_encoding = p.type && q.type && p.type->size == q.type->size && p.type->size != 0 &&
+                             unsigned_bits(*p.type) && unsigned_bits(*q.type);
+  auto type_name = [](const device& d, const param& x) {
+    return x.type ? fmt::format("{} ({})", x.type->name, shown(d, x.data_type)) : shown(d, x.data_type);
+  };
+  if (!same(c.a, p.data_type, c.b, q.data_type)) {
+    auto& d = c.add(group::parameters, same_encoding ? impact::cosmetic : impact::breaking, "param-type", subject,
+                    fmt::format("data type {} -> {}", type_name(c.a, p), type_name(c.b, q)),
+                    same_encoding ? "same size and encoding: tools show the value differently (hex or decimal), configured "
+                        "values stay valid"
+                                  : "a configured value is sent in the old type's encoding and is refused or misread");
+    d.before = at(c.a, p.data_type);
+    d.after = at(c.b, q.data_type);
+  }
   field(p.data_size, q.data_size, impact::breaking, "param-size", "data size",
         "a configured value no longer has the size the device expects");
   compare_range(c, p, q, subject);
@@ -207,9 +224,9 @@ void compare_params(context& c) {
   m.by([](const device& d, const param& p) { return content(d, p, true); });
   m.by([](const device& d, const param& p) { return fmt::format("{}|{}", static_cast<int>(p.kind), key(d, p.name)); });
   m.by([](const device& d, const param& p) { return content(d, p, false); });
-  m.by([](const device& d, const param& p) {
-    return fmt::format("{}|{}|{}", static_cast<int>(p.kind), p.number, key(d, p.data_type));
-  });
+  // What is left at the same number was edited in place (name and type
+  // together, as a vendor does when a WORD becomes a UINT "Qualifier").
+  m.by([](const device&, const param& p) { return fmt::format("{}|{}", static_cast<int>(p.kind), p.number); });
 
   for (std::uint32_t i = 0; i < c.a.params.size(); ++i) {
     const auto& p = c.a.params[i];
