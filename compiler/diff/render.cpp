@@ -13,10 +13,11 @@ namespace {
 
 constexpr group all_groups[] = {group::identity, group::io, group::parameters, group::connections, group::other};
 
-// Control bytes would drive the terminal: shown as <XX>.
+// Control bytes would drive the terminal: shown as <XX>. Text that is not
+// UTF-8 is read as Windows-1252, as in the JSON.
 std::string safe(std::string_view s) {
   std::string out;
-  for (const char ch : s) {
+  for (const char ch : emit::detail::to_utf8(s)) {
     const auto c = static_cast<unsigned char>(ch);
     if (c < 0x20 || c == 0x7F) out += fmt::format("<{:02X}>", c);
     else out += ch;
@@ -74,12 +75,13 @@ std::string render_text(const result& r, const analysis& before, const analysis&
     return fmt::format("{} and {}: no difference between the two models\n", before.source->path(), after.source->path());
   }
   const auto& k = r.keys;
-  out += fmt::format("{}identity and keying{}: {}{}\n", bold, reset, identity_text(k.before),
+  out += fmt::format("{}identity{}: {}{}\n", bold, reset, identity_text(k.before),
                      k.exact_match && k.compatible_match && identity_text(k.before) == identity_text(k.after)
                          ? " (unchanged)"
                          : " -> " + identity_text(k.after));
-  out += fmt::format("  a scanner configured with the old file, keyed to exact match: {}; to compatible revision: {}\n",
-                     k.exact_match ? "Match" : "Mismatch", k.compatible_match ? "Match" : "Mismatch");
+  out += fmt::format("{}keying{}: a scanner configured with the old file says {} when keyed to exact match, {} when "
+                     "keyed to compatible revision\n",
+                     bold, reset, k.exact_match ? "Match" : "Mismatch", k.compatible_match ? "Match" : "Mismatch");
   for (const auto g : all_groups) {
     bool header = false;
     for (const auto& d : r.differences) {

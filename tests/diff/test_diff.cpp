@@ -256,3 +256,37 @@ TEST(Diff, TextOutputIsCompilerStyle) {
   const auto coloured = edsc::diff::render_text(c.r, *c.before, *c.after, {true});
   EXPECT_NE(coloured.find("\033[1;31mbreaking"), std::string::npos);
 }
+
+// DeviceNet: Strobe withdrawn, from its xxxInfo and from Input1's mask.
+TEST(Diff, DeviceNetConnectionTypeWithdrawn) {
+  const auto old_text = project_file(rightsight_old);
+  auto no_strobe = replaced(old_text, "        StrobeInfo = 0x0002, 1, 0;\n", "");
+  no_strobe = replaced(no_strobe, "0x0006,                         $ strobe and change of state", "0x0004,");
+  const auto c = compare(old_text, no_strobe);
+  ASSERT_EQ(c.kinds(), (std::vector<std::string>{"io-connection-mask", "io-connection-removed"})) << c.dump();
+  EXPECT_EQ(c.r.differences[0].message, "usable with Strobe, COS -> COS");
+  EXPECT_EQ(c.r.differences[1].subject, "[IO_Info] Strobe connection");
+  for (const auto& d : c.r.differences) EXPECT_EQ(d.level, impact::breaking);
+}
+
+// EtherNet/IP: a connection's T->O size and input instance change, and a
+// second connection appears.
+TEST(Diff, EtherNetIpConnections) {
+  const std::string with_connection =
+      device_eds +
+      "[Connection Manager]\n"
+      "        Connection1 = 0x04010002, 0x44640405, , 4, Assem100, , 2, Assem101, , , , ,\n"
+      "                      \"Exclusive Owner\", \"\", \"20 04 24 01 2C 64 2C 65\";\n";
+  auto changed = replaced(with_connection, ", 2, Assem101,", ", 4, Assem101,");
+  changed = replaced(changed, "2C 64 2C 65", "2C 64 2C 66");
+  changed += "        Connection2 = 0x02010002, 0x44640405, , 0, , , 2, Assem101, , , , ,\n"
+             "                      \"Input Only\", \"\", \"20 04 24 01 2C FE 2C 65\";\n";
+  const auto c = compare(with_connection, changed);
+  ASSERT_EQ(c.kinds(), (std::vector<std::string>{"connection-size", "connection-instance", "connection-added"}))
+      << c.dump();
+  EXPECT_EQ(c.r.differences[0].message, "T->O size 2 -> 4 bytes");
+  EXPECT_EQ(c.r.differences[0].level, impact::breaking);
+  EXPECT_EQ(c.r.differences[1].message, "T->O assembly instance 101 -> 102");
+  EXPECT_EQ(c.r.differences[2].level, impact::additive);
+  EXPECT_EQ(c.r.differences[2].in, group::connections);
+}
