@@ -142,9 +142,9 @@ std::string_view title(group g) {
   return "other entries";
 }
 
-result compare(const analysis& before, const analysis& after, const options& opt) {
+result compare(const model::device& before, const model::device& after, const options& opt) {
   result out;
-  detail::context c{before.dev, after.dev, opt, out, {}, {}, {}};
+  detail::context c{before, after, opt, out, {}, {}, {}};
   detail::compare_identity(c);
   detail::compare_params(c);
   detail::compare_io(c);

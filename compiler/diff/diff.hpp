@@ -64,7 +64,10 @@ struct result {
   [[nodiscard]] bool breaking() const { return count(impact::breaking) > 0; }
 };
 
-[[nodiscard]] result compare(const analysis& before, const analysis& after, const options& opt = {});
+[[nodiscard]] result compare(const model::device& before, const model::device& after, const options& opt = {});
+[[nodiscard]] inline result compare(const analysis& before, const analysis& after, const options& opt = {}) {
+  return compare(before.dev, after.dev, opt);
+}
 
 [[nodiscard]] std::string_view to_string(impact i);
 [[nodiscard]] std::string_view to_string(group g);
