@@ -64,10 +64,7 @@ void register_diff(CLI::App& app, command_action& run) {
   auto* cmd = app.add_subcommand("diff", "Compare two EDS files by meaning and say what breaks a configured network");
   cmd->add_option("old", cli->before, "The EDS file a network was configured with")->required();
   cmd->add_option("new", cli->after, "The new EDS file")->required();
-  const std::map<std::string, color_mode> colors{
-      {"auto", color_mode::auto_detect}, {"always", color_mode::always}, {"never", color_mode::never}};
-  cmd->add_option("--color", cli->color, "Colour the text output: auto (on a terminal), always, never")
-      ->transform(CLI::CheckedTransformer(colors, CLI::ignore_case));
+  add_color_option(cmd, cli->color);
   cmd->add_option("--format", cli->format, "Output format: text or json (docs/diff-json.schema.json)")
       ->transform(CLI::CheckedTransformer(std::map<std::string, std::string>{{"text", "text"}, {"json", "json"}},
                                           CLI::ignore_case));

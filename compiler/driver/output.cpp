@@ -28,12 +28,16 @@ void print_error(std::string_view message) {
   write_all(stderr, line);
 }
 
-void add_report_options(CLI::App* cmd, color_mode& color, report_format& format,
-                        std::vector<std::string>& warning_flags) {
+void add_color_option(CLI::App* cmd, color_mode& color) {
   const std::map<std::string, color_mode> colors{
       {"auto", color_mode::auto_detect}, {"always", color_mode::always}, {"never", color_mode::never}};
   cmd->add_option("--color", color, "Colour the text output: auto (on a terminal), always, never")
       ->transform(CLI::CheckedTransformer(colors, CLI::ignore_case));
+}
+
+void add_report_options(CLI::App* cmd, color_mode& color, report_format& format,
+                        std::vector<std::string>& warning_flags) {
+  add_color_option(cmd, color);
   const std::map<std::string, report_format> formats{
       {"text", report_format::text}, {"json", report_format::json}, {"sarif", report_format::sarif}};
   cmd->add_option("--format", format, "Report format: text, json, sarif (SARIF 2.1.0)")
