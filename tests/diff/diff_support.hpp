@@ -47,10 +47,11 @@ struct compared {
 };
 
 inline compared compare(const std::string& old_text, const std::string& new_text,
-                        const edsc::diff::options& opt = {}) {
+                        const edsc::diff::options& opt = {}, const std::string& old_name = "old.eds",
+                        const std::string& new_name = "new.eds") {
   compared c;
-  c.before = edsc::edit::analyze("old.eds", old_text);
-  c.after = edsc::edit::analyze("new.eds", new_text);
+  c.before = edsc::edit::analyze(old_name, old_text);
+  c.after = edsc::edit::analyze(new_name, new_text);
   c.r = edsc::diff::compare(*c.before, *c.after, opt);
   return c;
 }

@@ -290,3 +290,18 @@ TEST(Diff, EtherNetIpConnections) {
   EXPECT_EQ(c.r.differences[2].level, impact::additive);
   EXPECT_EQ(c.r.differences[2].in, group::connections);
 }
+
+// The reference case exactly as docs/diff.md prints it: the whole text,
+// reviewed there by reading, so the page and the command cannot drift apart.
+TEST(Diff, RightSightTextIsTheDocumentedOne) {
+  const auto doc = project_file("docs/diff.md");
+  const std::string first = "    $ edsc diff " + rightsight_old + " " + rightsight_new + "\n";
+  const auto begin = doc.find(first);
+  ASSERT_NE(begin, std::string::npos);
+  const auto end = doc.find("\n\n## ", begin);
+  std::string expected;
+  std::istringstream lines(doc.substr(begin + first.size(), end - begin - first.size() + 1));
+  for (std::string line; std::getline(lines, line);) expected += (line.size() >= 4 ? line.substr(4) : line) + '\n';
+  const auto c = compare(project_file(rightsight_old), project_file(rightsight_new), {}, rightsight_old, rightsight_new);
+  EXPECT_EQ(c.dump(), expected);
+}
