@@ -54,7 +54,9 @@ struct context {
   }
 };
 
+// A value missing with its whole entry is in neither place of that file.
 [[nodiscard]] inline side at(const device& d, const value& v) {
+  if (!v.present() && v.from.entry == model::none) return {};
   return {v.from.where.begin, shown(d, v)};
 }
 [[nodiscard]] inline side at(const model::origin& o, std::string what = {}) { return {o.where.begin, std::move(what)}; }

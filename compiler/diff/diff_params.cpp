@@ -189,9 +189,10 @@ void compare_pair(context& c, const param& p, const param& q) {
   if (!same(c.a, p.data_type, c.b, q.data_type)) {
     auto& d = c.add(group::parameters, same_encoding ? impact::cosmetic : impact::breaking, "param-type", subject,
                     fmt::format("data type {} -> {}", type_name(c.a, p), type_name(c.b, q)),
-                    same_encoding ? "same size and encoding: tools show the value differently (hex or decimal), configured "
-                        "values stay valid"
-                                  : "a configured value is sent in the old type's encoding and is refused or misread");
+                    same_encoding
+                        ? "same size and encoding: tools show the value differently (hex or decimal); configured "
+                          "values stay valid"
+                        : "a configured value is sent in the old type's encoding and is refused or misread");
     d.before = at(c.a, p.data_type);
     d.after = at(c.b, q.data_type);
   }
