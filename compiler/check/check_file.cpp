@@ -34,7 +34,12 @@ checked_file check_file(const std::string& path, const check_options& options) {
     out.io_error = err->message;
     return out;
   }
-  auto a = analyze(std::move(std::get<std::unique_ptr<source_file>>(read)), options);
+  return check_source(std::move(std::get<std::unique_ptr<source_file>>(read)), options);
+}
+
+checked_file check_source(std::unique_ptr<source_file> source, const check_options& options) {
+  checked_file out;
+  auto a = analyze(std::move(source), options);
   // The source is heap-held, so it outlives the tree and model that point into it.
   out.report.source = std::move(a->source);
   out.report.diags = std::move(a->diags);

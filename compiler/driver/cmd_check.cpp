@@ -11,6 +11,7 @@
 
 #include "check/check_file.hpp"
 #include "diag/render_text.hpp"
+#include "driver/choice.hpp"
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
 #include "io/collect_inputs.hpp"
@@ -24,6 +25,7 @@ namespace {
 struct check_cli {
   std::vector<std::string> inputs;
   std::vector<std::string> warning_flags;
+  std::string stdin_name;  // --stdin-filename
   color_mode color = color_mode::auto_detect;
   report_format format = report_format::text;
   std::size_t max_errors = 0;  // 0: no limit
@@ -35,8 +37,10 @@ struct check_cli {
 // output is the same whatever the scheduling.
 class ordered_checker {
  public:
-  ordered_checker(const std::vector<std::string>& files, const check_options& options, unsigned jobs)
-      : files_(files), options_(options), results_(files.size()) {
+  // `stdin_read` is what `-` among `files` read (at most one `-`).
+  ordered_checker(const std::vector<std::string>& files, const check_options& options, unsigned jobs,
+                  io::read_result stdin_read)
+      : files_(files), options_(options), stdin_read_(std::move(stdin_read)), results_(files.size()) {
     const unsigned n = std::max(1u, std::min<unsigned>(jobs, static_cast<unsigned>(files.size())));
     for (unsigned i = 0; i < n; ++i) workers_.emplace_back([this] { work(); });
   }
@@ -55,7 +59,7 @@ class ordered_checker {
  private:
   void work() {
     for (std::size_t i = next_++; i < files_.size(); i = next_++) {
-      auto result = check_file(files_[i], options_);
+      auto result = io::is_stdin(files_[i]) ? check_stdin() : check_file(files_[i], options_);
       {
         std::lock_guard lock(mutex_);
         results_[i] = std::move(result);
@@ -65,7 +69,13 @@ class ordered_checker {
   }
 
   const std::vector<std::string>& files_;
+  checked_file check_stdin() {
+    if (auto* err = std::get_if<io::io_error>(&stdin_read_)) return checked_file{{}, err->message};
+    return check_source(std::move(std::get<std::unique_ptr<source_file>>(stdin_read_)), options_);
+  }
+
   const check_options& options_;
+  io::read_result stdin_read_;
   std::vector<std::optional<checked_file>> results_;
   std::atomic<std::size_t> next_{0};
   std::mutex mutex_;
@@ -91,8 +101,18 @@ int run_check(const check_cli& cli) {
     }
   }
   const auto inputs = io::collect_inputs(cli.inputs);
+  const auto stdin_args = std::count_if(inputs.files.begin(), inputs.files.end(), io::is_stdin);
+  if (stdin_args > 1) {
+    print_error("'-' (standard input) can be named only once");
+    return exit_failure;
+  }
+  if (!stdin_filename_used(stdin_args > 0, cli.stdin_name)) return exit_failure;
   for (const auto& e : inputs.errors) print_error(e.message);
   bool io_failed = !inputs.errors.empty();
+  // Read up front (by one thread); `-` is then checked in its place among
+  // the inputs, and a read failure is reported like any unreadable file.
+  io::read_result stdin_read;
+  if (stdin_args > 0) stdin_read = io::read_stdin(cli.stdin_name);
 
   const unsigned jobs = cli.jobs > 0 ? cli.jobs : std::max(1u, std::thread::hardware_concurrency());
   const text_style style{cli.format == report_format::text && use_color(cli.color, stdout)};
@@ -100,7 +120,7 @@ int run_check(const check_cli& cli) {
   std::size_t shown_errors = 0, hidden = 0;
   std::vector<file_report> kept;  // for the whole-run formats
   {
-    ordered_checker checker(inputs.files, options, jobs);
+    ordered_checker checker(inputs.files, options, jobs, std::move(stdin_read));
     std::string out;
     for (std::size_t i = 0; i < inputs.files.size(); ++i) {
       auto result = checker.take(i);
@@ -147,16 +167,17 @@ int run_check(const check_cli& cli) {
 void register_check(CLI::App& app, command_action& run) {
   auto cli = std::make_shared<check_cli>();
   auto* cmd = app.add_subcommand("check", "Parse and check EDS files, reporting problems like a compiler");
-  cmd->add_option("inputs", cli->inputs, "EDS files, or directories searched recursively for *.eds")
+  cmd->add_option("inputs", cli->inputs,
+                  "EDS files, directories searched recursively for *.eds, or '-' for standard input")
       ->required();
+  add_stdin_filename(cmd, cli->stdin_name);
   add_report_options(cmd, cli->color, cli->format, cli->warning_flags);
   cmd->add_option("--max-errors", cli->max_errors, "Show at most N errors (0: all)");
-  const std::map<std::string, std::uint8_t> networks{{"devicenet", model::net_devicenet},
-                                                      {"ethernetip", model::net_ethernetip},
-                                                      {"controlnet", model::net_controlnet}};
-  cmd->add_option("--network", cli->networks,
-                  "Check as this network (devicenet, ethernetip, controlnet) instead of detecting it")
-      ->transform(CLI::CheckedTransformer(networks, CLI::ignore_case));
+  add_choice(cmd, "--network", cli->networks,
+             {{"devicenet", std::uint8_t{model::net_devicenet}},
+              {"ethernetip", std::uint8_t{model::net_ethernetip}},
+              {"controlnet", std::uint8_t{model::net_controlnet}}},
+             "Check as this network instead of detecting it");
   cmd->add_option("-j,--jobs", cli->jobs, "Files checked in parallel (default: one per core)");
   cmd->callback([&run, cli] { run = [cli] { return run_check(*cli); }; });
 }

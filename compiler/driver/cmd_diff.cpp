@@ -1,6 +1,5 @@
 // `edsc diff OLD.eds NEW.eds`: what changed between two EDS files and whether
 // it breaks a network configured with the old one (docs/diff.md).
-#include <map>
 #include <memory>
 
 #include <fmt/format.h>
@@ -8,6 +7,7 @@
 #include "check/check_file.hpp"
 #include "diag/render_text.hpp"
 #include "diff/diff.hpp"
+#include "driver/choice.hpp"
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
 
@@ -64,16 +64,14 @@ void register_diff(CLI::App& app, command_action& run) {
   auto* cmd = app.add_subcommand("diff", "Compare two EDS files by meaning and say what breaks a configured network");
   cmd->add_option("old", cli->before, "The EDS file a network was configured with")->required();
   cmd->add_option("new", cli->after, "The new EDS file")->required();
-  add_color_option(cmd, cli->color);
-  cmd->add_option("--format", cli->format, "Output format: text or json (docs/diff-json.schema.json)")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, std::string>{{"text", "text"}, {"json", "json"}},
-                                          CLI::ignore_case));
-  const std::map<std::string, diff::keying> keyings{{"compatible", diff::keying::compatible},
-                                                    {"exact", diff::keying::exact}};
-  cmd->add_option("--keying", cli->keying,
-                  "How the scanners check revisions: compatible (a raised minor revision is additive) or exact "
-                  "(any revision change is breaking)")
-      ->transform(CLI::CheckedTransformer(keyings, CLI::ignore_case));
+  add_choice(cmd, "--color", cli->color,
+             {{"auto", color_mode::auto_detect}, {"always", color_mode::always}, {"never", color_mode::never}},
+             "Colour the text output: auto (on a terminal, the default), always, never");
+  add_choice(cmd, "--format", cli->format, {"text", "json"},
+             "Output format: text (the default) or json (docs/diff-json.schema.json)");
+  add_choice(cmd, "--keying", cli->keying, {{"compatible", diff::keying::compatible}, {"exact", diff::keying::exact}},
+             "How the scanners check revisions: compatible (the default; a raised minor revision is additive) or "
+             "exact (any revision change is breaking)");
   cmd->callback([&run, cli] { run = [cli] { return run_diff(*cli); }; });
 }
 

@@ -13,12 +13,14 @@ namespace {
 
 struct dump_options {
   std::string input;
+  std::string stdin_name;
   bool json = false;
   int indent = 2;
 };
 
 int run_dump(const dump_options& opt) {
-  const auto input_file = read_or_report(opt.input);
+  if (!stdin_filename_used(io::is_stdin(opt.input), opt.stdin_name)) return exit_failure;
+  const auto input_file = read_or_report(opt.input, opt.stdin_name);
   if (!input_file) return exit_failure;
   const auto& src = *input_file;
   const auto parsed = parse(src);
@@ -39,7 +41,8 @@ int run_dump(const dump_options& opt) {
 void register_dump(CLI::App& app, command_action& run) {
   auto opt = std::make_shared<dump_options>();
   auto* cmd = app.add_subcommand("dump", "Print the typed model of one EDS file");
-  cmd->add_option("input", opt->input, "The EDS file")->required();
+  cmd->add_option("input", opt->input, "The EDS file ('-': standard input)")->required();
+  add_stdin_filename(cmd, opt->stdin_name);
   cmd->add_flag("--json", opt->json, "Write the model as JSON (docs/dump-json.md); currently the only format");
   cmd->add_option("--indent", opt->indent, "JSON indentation; -1 for one line")->default_val(2);
   cmd->callback([&run, opt] { run = [opt] { return run_dump(*opt); }; });

@@ -53,7 +53,7 @@ diagnostics introduced(const diagnostics& before, const diagnostics& after) {
 
 int run_edit(const edit_options& opt) {
   if (const int rc = opt.dest.refuse_overwrite(); rc != exit_ok) return rc;
-  const auto input_file = read_or_report(opt.dest.input);
+  const auto input_file = opt.dest.read();
   if (!input_file) return exit_failure;
   const auto& src = *input_file;
   const auto before = edit::analyze(src.path(), std::string(src.text()));

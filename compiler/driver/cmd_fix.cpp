@@ -29,7 +29,7 @@ int run_fix(const fix_options& opt) {
       return exit_failure;
     }
   }
-  const auto input_file = read_or_report(opt.dest.input);
+  const auto input_file = opt.dest.read();
   if (!input_file) return exit_failure;
   const auto& src = *input_file;
   auto result = edit::fix_text(src.path(), std::string(src.text()), options);

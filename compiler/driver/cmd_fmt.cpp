@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "diag/render_text.hpp"
+#include "driver/choice.hpp"
 #include "driver/commands.hpp"
 #include "driver/destination.hpp"
 #include "driver/output.hpp"
@@ -23,7 +24,7 @@ struct fmt_options {
 
 int run_fmt(const fmt_options& opt) {
   if (const int rc = opt.dest.refuse_overwrite(); rc != exit_ok) return rc;
-  const auto input_file = read_or_report(opt.dest.input);
+  const auto input_file = opt.dest.read();
   if (!input_file) return exit_failure;
   const auto& src = *input_file;
   const std::string input(src.text());
@@ -53,7 +54,9 @@ int run_fmt(const fmt_options& opt) {
   }
   if (opt.check) {
     if (*out == input) return exit_ok;
-    write_all(stderr, fmt::format("{}: not formatted (edsc fmt --in-place {} formats it)\n", src.path(), src.path()));
+    write_all(stderr, io::is_stdin(opt.dest.input)
+                          ? fmt::format("{}: not formatted\n", src.path())
+                          : fmt::format("{}: not formatted (edsc fmt --in-place {} formats it)\n", src.path(), src.path()));
     return exit_findings;
   }
   return opt.dest.write(*out);
@@ -66,8 +69,7 @@ void register_fmt(CLI::App& app, command_action& run) {
   auto* cmd = app.add_subcommand("fmt", "Lay an EDS file out canonically without changing its meaning");
   opt->dest.add_options(*cmd, "The EDS file to format");
   cmd->add_flag("--check", opt->check, "Write nothing; exit 1 when the file is not formatted (for CI)");
-  cmd->add_option("--eol", opt->eol, "Line endings of the output: lf or crlf (default: keep the file's)")
-      ->check(CLI::IsMember({"lf", "crlf"}));
+  add_choice(cmd, "--eol", opt->eol, {"lf", "crlf"}, "Line endings of the output (default: keep the file's)");
   cmd->callback([&run, opt] { run = [opt] { return run_fmt(*opt); }; });
 }
 

@@ -17,7 +17,7 @@ namespace edsc::driver {
 namespace {
 
 struct header_cli {
-  std::string input, output, prefix = "EDS_", serial, template_dir;
+  std::string input, output, prefix = "EDS_", serial, template_dir, stdin_name;
 };
 
 // Decimal or 0x-hexadecimal, at most 32 bits (Identity attribute 6 is a UDINT).
@@ -49,25 +49,28 @@ int run_header(const header_cli& cli) {
       return exit_failure;
     }
   }
-  const bool to_stdout = cli.output == "-";
-  opt.output_name = to_stdout ? std::filesystem::path(cli.input).stem().string() + ".h"
-                              : std::filesystem::path(cli.output).filename().string();
-
-  const auto input_file = read_or_report(cli.input);
+  if (!stdin_filename_used(io::is_stdin(cli.input), cli.stdin_name)) return exit_failure;
+  const auto input_file = read_or_report(cli.input, cli.stdin_name);
   if (!input_file) return exit_failure;
   const auto& src = *input_file;
+  const bool to_stdout = cli.output == "-";
+  // The include guard follows the header's name; on standard output it is
+  // the input's (for `-`, the --stdin-filename, else "stdin.h").
+  const std::string input_name = io::is_stdin(cli.input) && cli.stdin_name.empty() ? "stdin" : src.path();
+  opt.output_name = to_stdout ? std::filesystem::path(input_name).stem().string() + ".h"
+                              : std::filesystem::path(cli.output).filename().string();
   const auto parsed = parse(src);
   diagnostics diags;
   const auto dev = lower(parsed.tree, diags);
   const auto result = emit::generate_header(dev, src, opt);
   for (const auto& issue : result.issues)
-    write_all(stderr, fmt::format("{}: {}: {}\n", cli.input, issue.error ? "error" : "warning", issue.message));
+    write_all(stderr, fmt::format("{}: {}: {}\n", src.path(), issue.error ? "error" : "warning", issue.message));
   if (result.failure) {
     print_error(*result.failure);
     return exit_failure;
   }
   if (result.has_error()) {
-    print_error(fmt::format("no header written for {}", cli.input));
+    print_error(fmt::format("no header written for {}", src.path()));
     return exit_findings;
   }
   if (to_stdout) {
@@ -87,7 +90,8 @@ int run_header(const header_cli& cli) {
 void register_header(CLI::App& app, command_action& run) {
   auto cli = std::make_shared<header_cli>();
   auto* cmd = app.add_subcommand("header", "Generate the C header firmware needs from one EDS file (docs/header.md)");
-  cmd->add_option("input", cli->input, "The EDS file")->required();
+  cmd->add_option("input", cli->input, "The EDS file ('-': standard input)")->required();
+  add_stdin_filename(cmd, cli->stdin_name);
   cmd->add_option("-o,--output", cli->output, "The header to write ('-' for standard output)")->required();
   cmd->add_option("--prefix", cli->prefix, "Prefix of every macro (a C identifier, may be empty)")
       ->default_str("EDS_");

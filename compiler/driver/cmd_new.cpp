@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "diag/render_text.hpp"
+#include "driver/choice.hpp"
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
 #include "edit/analyze.hpp"
@@ -79,7 +80,7 @@ void register_new(CLI::App& app, command_action& run) {
   cmd->add_option("--catalog", s.catalog, "Catalog number");
   cmd->add_option("--description", s.description, "[File] DescText");
   cmd->add_option("--revision", s.revision, "Device revision major.minor (default 1.1)");
-  cmd->add_option("--network", s.network, "devicenet (default) or ethernetip")->check(CLI::IsMember({"devicenet", "ethernetip"}));
+  add_choice(cmd, "--network", s.network, {"devicenet", "ethernetip"}, "The device's network (default: devicenet)");
   cmd->add_option("--input", s.input, "Input bytes (produced by the device)");
   cmd->add_option("--output", s.output, "Output bytes (consumed by the device)");
   cmd->add_option("--connections", s.connections, "DeviceNet connections, first is the default: poll,strobe,cos,cyclic")
@@ -90,7 +91,7 @@ void register_new(CLI::App& app, command_action& run) {
   cmd->add_option("--output-help", s.output_help, "Help text of the output data");
   cmd->add_option("--date", s.date, "Creation date mm-dd-yyyy (default: today), for reproducible builds");
   cmd->add_option("--time", s.time, "Creation time hh:mm:ss (default: 00:00:00 with --date, else now)");
-  cmd->add_option("--eol", opt->eol, "Line endings: lf (default) or crlf")->check(CLI::IsMember({"lf", "crlf"}));
+  add_choice(cmd, "--eol", opt->eol, {"lf", "crlf"}, "Line endings (default: lf)");
   cmd->add_option("-o,--output-file", opt->output, "Write the file here (default: standard output)");
   cmd->add_flag("--force", opt->force, "Write even when the result has errors");
   cmd->callback([&run, opt, vendor, type, code, name, from] {

@@ -108,7 +108,8 @@ void register_verify(CLI::App& app, command_action& run) {
   cmd->add_option("eds", cli->eds, "The device's EDS file");
   cmd->add_option("--capture", cli->capture, "CAN log: candump -l/-L, candump screen output, or step/dir/can_id/data TSV");
   cmd->add_option("--mac", cli->mac, "Compare only the node at this MAC ID (default: every node heard)")
-      ->check(CLI::Range(0, 63));
+      ->check(CLI::Range(0, 63).description(""))
+      ->type_name("0..63");
   cmd->add_option("--decode", cli->decode, "Print the decoded conversation of this log as a table, compare nothing");
   add_report_options(cmd, cli->color, cli->format, cli->warning_flags);
   cmd->callback([&run, cli] { run = [cli] { return run_verify(*cli); }; });

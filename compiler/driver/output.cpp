@@ -1,10 +1,12 @@
 #include "driver/output.hpp"
 
 #include <cstdlib>
-#include <map>
+
+#include <fmt/format.h>
 
 #include <unistd.h>
 
+#include "driver/choice.hpp"
 #include "io/read_file.hpp"
 
 namespace edsc::driver {
@@ -28,27 +30,33 @@ void print_error(std::string_view message) {
   write_all(stderr, line);
 }
 
-void add_color_option(CLI::App* cmd, color_mode& color) {
-  const std::map<std::string, color_mode> colors{
-      {"auto", color_mode::auto_detect}, {"always", color_mode::always}, {"never", color_mode::never}};
-  cmd->add_option("--color", color, "Colour the text output: auto (on a terminal), always, never")
-      ->transform(CLI::CheckedTransformer(colors, CLI::ignore_case));
-}
-
 void add_report_options(CLI::App* cmd, color_mode& color, report_format& format,
                         std::vector<std::string>& warning_flags) {
-  add_color_option(cmd, color);
-  const std::map<std::string, report_format> formats{
-      {"text", report_format::text}, {"json", report_format::json}, {"sarif", report_format::sarif}};
-  cmd->add_option("--format", format, "Report format: text, json, sarif (SARIF 2.1.0)")
-      ->transform(CLI::CheckedTransformer(formats, CLI::ignore_case));
+  add_choice(cmd, "--color", color,
+             {{"auto", color_mode::auto_detect}, {"always", color_mode::always}, {"never", color_mode::never}},
+             "Colour the text output: auto (on a terminal, the default), always, never");
+  add_choice(cmd, "--format", format,
+             {{"text", report_format::text}, {"json", report_format::json}, {"sarif", report_format::sarif}},
+             "Report format: text (the default), json, sarif (SARIF 2.1.0)");
   cmd->add_option("-W", warning_flags,
                   "-Werror, -W<id|group>, -Wno-<id|group>, -Werror=<id|group>, -Wno-error=<id|group>")
       ->allow_extra_args(false);
 }
 
-std::unique_ptr<source_file> read_or_report(const std::string& path) {
-  auto read = io::read_source(path);
+void add_stdin_filename(CLI::App* cmd, std::string& name) {
+  cmd->add_option("--stdin-filename", name, "Name standard input ('-') this way in diagnostics (default: <stdin>)")
+      ->type_name("NAME");
+}
+
+bool stdin_filename_used(bool reads_stdin, const std::string& name) {
+  if (reads_stdin || name.empty()) return true;
+  print_error(fmt::format("--stdin-filename {} names standard input, but no input is '-'", name));
+  return false;
+}
+
+std::unique_ptr<source_file> read_or_report(const std::string& path, const std::string& stdin_name) {
+  auto read = io::is_stdin(path) ? io::read_stdin(stdin_name)
+                                 : io::read_source(path);
   if (auto* err = std::get_if<io::io_error>(&read)) {
     print_error(err->message);
     return nullptr;

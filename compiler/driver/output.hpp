@@ -21,14 +21,20 @@ bool write_all(std::FILE* stream, std::string_view s);
 
 void print_error(std::string_view message);  // "edsc: error: ..." on stderr
 
-// --color=auto|always|never.
-void add_color_option(CLI::App* cmd, color_mode& color);
-
 // --color, --format and -W, shared by every command that reports diagnostics.
 void add_report_options(CLI::App* cmd, color_mode& color, report_format& format,
                         std::vector<std::string>& warning_flags);
 
-// Reads an input file; on failure prints why and returns null.
-[[nodiscard]] std::unique_ptr<source_file> read_or_report(const std::string& path);
+// --stdin-filename NAME: what diagnostics call standard input (`-`), as
+// formatters let editors say which file the piped text belongs to.
+void add_stdin_filename(CLI::App* cmd, std::string& name);
+// A --stdin-filename without `-` among the inputs is a usage error: prints
+// why and returns false.
+[[nodiscard]] bool stdin_filename_used(bool reads_stdin, const std::string& name);
+
+// Reads an input file, or standard input for `-` (named `stdin_name`, else
+// `<stdin>`); on failure prints why and returns null.
+[[nodiscard]] std::unique_ptr<source_file> read_or_report(const std::string& path,
+                                                          const std::string& stdin_name = {});
 
 }  // namespace edsc::driver

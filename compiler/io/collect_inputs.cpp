@@ -23,6 +23,10 @@ bool has_eds_extension(const fs::path& p) {
 collected_inputs collect_inputs(const std::vector<std::string>& args) {
   collected_inputs out;
   for (const auto& arg : args) {
+    if (is_stdin(arg)) {
+      out.files.push_back(arg);
+      continue;
+    }
     std::error_code ec;
     const auto status = fs::status(arg, ec);
     if (ec || !fs::exists(status)) {

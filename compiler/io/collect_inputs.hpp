@@ -13,7 +13,7 @@ struct collected_inputs {
 
 // Expands the command line's FILE|DIR arguments. A named file is taken as it
 // is, whatever its extension; a directory contributes every `*.eds` below it
-// (case-insensitive), recursively.
+// (case-insensitive), recursively. `-` (standard input) is passed through.
 [[nodiscard]] collected_inputs collect_inputs(const std::vector<std::string>& args);
 
 }  // namespace edsc::io

@@ -1,5 +1,6 @@
 #include "io/read_file.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -24,6 +25,32 @@ io_error errno_error(const std::string& path, const char* what) {
   return io_error{fmt::format("{}: cannot {}: {}", path, what, std::strerror(errno))};
 }
 
+io_error over_limit(const std::string& path, std::uint64_t size, std::uint64_t max_bytes, const char* at_least) {
+  return io_error{fmt::format("{}: file is {}{} bytes, over the input limit of {} bytes", path, at_least, size,
+                              max_bytes)};
+}
+
+// Appends what `fd` yields until end of file or `limit` bytes; false (errno
+// set) on a read error.
+bool read_to_end(int fd, std::string& text, std::uint64_t limit) {
+  std::size_t done = text.size();
+  for (;;) {
+    if (done == text.size()) {
+      text.resize(std::min<std::uint64_t>(limit, std::max<std::size_t>({done * 2, 65536, text.capacity()})));
+    }
+    if (done == text.size()) break;  // the limit is reached
+    const ssize_t n = ::read(fd, text.data() + done, text.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return false;
+    }
+    if (n == 0) break;
+    done += static_cast<std::size_t>(n);
+  }
+  text.resize(done);
+  return true;
+}
+
 }  // namespace
 
 read_result read_source(const std::string& path, std::uint64_t max_bytes) {
@@ -36,24 +63,23 @@ read_result read_source(const std::string& path, std::uint64_t max_bytes) {
   if (S_ISDIR(st.st_mode)) return io_error{fmt::format("{}: is a directory, not an EDS file", path)};
   if (!S_ISREG(st.st_mode)) return io_error{fmt::format("{}: not a regular file", path)};
   const auto size = static_cast<std::uint64_t>(st.st_size);
-  if (size > max_bytes) {
-    return io_error{fmt::format("{}: file is {} bytes, over the input limit of {} bytes", path,
-                                size, max_bytes)};
-  }
+  if (size > max_bytes) return over_limit(path, size, max_bytes, "");
 
-  std::string text(size, '\0');
-  std::size_t done = 0;
-  while (done < size) {
-    const ssize_t n = ::read(fd, text.data() + done, size - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return errno_error(path, "read file");
-    }
-    if (n == 0) break;  // shrank while reading
-    done += static_cast<std::size_t>(n);
-  }
-  text.resize(done);
+  std::string text;
+  text.reserve(size);
+  // Up to the size stat reported: a file that grows meanwhile is cut there,
+  // one that shrinks ends early.
+  if (!read_to_end(fd, text, size)) return errno_error(path, "read file");
   return std::make_unique<source_file>(path, std::move(text));
+}
+
+read_result read_stdin(const std::string& name, std::uint64_t max_bytes) {
+  const std::string display_name = name.empty() ? default_stdin_name : name;
+  std::string text;
+  // One byte past the limit tells "exactly at the limit" from "over it".
+  if (!read_to_end(STDIN_FILENO, text, max_bytes + 1)) return errno_error(display_name, "read standard input");
+  if (text.size() > max_bytes) return over_limit(display_name, text.size(), max_bytes, "at least ");
+  return std::make_unique<source_file>(display_name, std::move(text));
 }
 
 }  // namespace edsc::io

@@ -2,6 +2,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <variant>
 
 #include "source/source_file.hpp"
@@ -20,5 +21,15 @@ using read_result = std::variant<std::unique_ptr<source_file>, io_error>;
 
 [[nodiscard]] read_result read_source(const std::string& path,
                                       std::uint64_t max_bytes = default_max_input_bytes);
+
+// `-` on a command line names standard input, as for most Unix tools.
+[[nodiscard]] inline bool is_stdin(std::string_view path) { return path == "-"; }
+inline constexpr const char* default_stdin_name = "<stdin>";
+
+// Reads standard input to its end (editors and pipes); `display_name` is what
+// diagnostics call it (empty: <stdin>). Over `max_bytes` it stops reading
+// and fails.
+[[nodiscard]] read_result read_stdin(const std::string& display_name,
+                                     std::uint64_t max_bytes = default_max_input_bytes);
 
 }  // namespace edsc::io

@@ -36,12 +36,14 @@ struct run_result {
   bool timed_out = false;
 };
 
-// Runs edsc with `args`, capturing stdout and stderr together. A run that takes
+// Runs edsc with `args`, capturing stdout and stderr together; standard input
+// is a pipe carrying `input`, or /dev/null without one. A run that takes
 // longer than `limit` is killed and reported as timed out.
-inline run_result run_edsc(const std::vector<std::string>& args, std::chrono::seconds limit = 60s) {
+inline run_result run_edsc_with_input(const std::vector<std::string>& args, const std::string* input,
+                                      std::chrono::seconds limit = 60s) {
   run_result r;
-  int fds[2];
-  if (::pipe2(fds, O_CLOEXEC) != 0) {
+  int fds[2], in[2] = {-1, -1};
+  if (::pipe2(fds, O_CLOEXEC) != 0 || (input != nullptr && ::pipe2(in, O_CLOEXEC) != 0)) {
     ADD_FAILURE() << "pipe failed";
     return r;
   }
@@ -49,7 +51,8 @@ inline run_result run_edsc(const std::vector<std::string>& args, std::chrono::se
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);
   posix_spawn_file_actions_adddup2(&actions, fds[1], STDERR_FILENO);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  if (input != nullptr) posix_spawn_file_actions_adddup2(&actions, in[0], STDIN_FILENO);
+  else posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
   std::vector<std::string> argv_s{EDSC_BINARY};
   argv_s.insert(argv_s.end(), args.begin(), args.end());
   std::vector<char*> argv;
@@ -61,10 +64,24 @@ inline run_result run_edsc(const std::vector<std::string>& args, std::chrono::se
   const int rc = posix_spawn(&pid, EDSC_BINARY, &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   ::close(fds[1]);
+  if (input != nullptr) {
+    ::close(in[0]);
+    ::fcntl(in[1], F_SETFL, O_NONBLOCK);
+    ::signal(SIGPIPE, SIG_IGN);  // a child that stops reading must not kill the test
+  }
   if (rc != 0) {
     ::close(fds[0]);
+    if (input != nullptr) ::close(in[1]);
     ADD_FAILURE() << "cannot start " << EDSC_BINARY;
     return r;
+  }
+  // Feeds the input while draining the output, so neither pipe can fill up
+  // and stall the other side.
+  std::size_t fed = 0;
+  int to_child = input != nullptr ? in[1] : -1;
+  if (to_child >= 0 && input->empty()) {
+    ::close(to_child);
+    to_child = -1;
   }
   const auto deadline = start + limit;
   char buf[65536];
@@ -75,18 +92,37 @@ inline run_result run_edsc(const std::vector<std::string>& args, std::chrono::se
       ::kill(pid, SIGKILL);
       break;
     }
-    pollfd pfd{fds[0], POLLIN, 0};
-    if (::poll(&pfd, 1, static_cast<int>(left.count())) <= 0) continue;
+    pollfd pfd[2] = {{fds[0], POLLIN, 0}, {to_child, POLLOUT, 0}};
+    if (::poll(pfd, to_child >= 0 ? 2 : 1, static_cast<int>(left.count())) <= 0) continue;
+    if (to_child >= 0 && (pfd[1].revents & (POLLOUT | POLLERR | POLLHUP)) != 0) {
+      const ssize_t n = ::write(to_child, input->data() + fed, input->size() - fed);
+      if (n > 0) fed += static_cast<std::size_t>(n);
+      if (n < 0 || fed == input->size()) {  // all written, or the child stopped reading
+        ::close(to_child);
+        to_child = -1;
+      }
+    }
+    if ((pfd[0].revents & (POLLIN | POLLHUP | POLLERR)) == 0) continue;
     const ssize_t n = ::read(fds[0], buf, sizeof buf);
     if (n <= 0) break;
     r.output.append(buf, static_cast<std::size_t>(n));
   }
   ::close(fds[0]);
+  if (to_child >= 0) ::close(to_child);
   int ws = 0;
   ::waitpid(pid, &ws, 0);
   r.took = std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - start);
   r.status = WIFEXITED(ws) ? WEXITSTATUS(ws) : 128 + WTERMSIG(ws);
   return r;
+}
+
+inline run_result run_edsc(const std::vector<std::string>& args, std::chrono::seconds limit = 60s) {
+  return run_edsc_with_input(args, nullptr, limit);
+}
+
+inline run_result run_edsc(const std::vector<std::string>& args, const std::string& input,
+                           std::chrono::seconds limit = 60s) {
+  return run_edsc_with_input(args, &input, limit);
 }
 
 inline std::string read_bytes(const fs::path& p) {

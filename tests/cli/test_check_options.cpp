@@ -55,6 +55,40 @@ TEST_F(Cli, SarifReportHasRulesResultsLocationsAndFixes) {
   EXPECT_EQ(res["fixes"][0]["artifactChanges"][0]["replacements"][0]["insertedContent"]["text"], ";");
 }
 
+TEST_F(Cli, SarifLocatesAbsolutePathsByFileUriAndRelativeOnesBySrcroot) {
+  const auto absolute = fs::absolute(corpus(kh_ko)).lexically_normal();
+  const auto a = json::parse(run_edsc({"check", "--format=sarif", absolute.string()}).output);
+  const auto& where = a["runs"][0]["results"][0]["locations"][0]["physicalLocation"]["artifactLocation"];
+  EXPECT_EQ(where["uri"], "file://" + absolute.string());  // the corpus path has nothing to encode
+  EXPECT_FALSE(where.contains("uriBaseId"));
+
+  const auto relative = fs::relative(absolute, fs::current_path());
+  ASSERT_FALSE(relative.is_absolute());
+  const auto r = json::parse(run_edsc({"check", "--format=sarif", relative.string()}).output);
+  const auto& run = r["runs"][0];
+  const auto& rel = run["results"][0]["locations"][0]["physicalLocation"]["artifactLocation"];
+  EXPECT_EQ(rel["uri"], relative.string());
+  EXPECT_EQ(rel["uriBaseId"], "SRCROOT");
+  EXPECT_EQ(run["originalUriBaseIds"]["SRCROOT"]["uri"], "file://" + fs::current_path().string() + "/");
+  EXPECT_EQ(run["results"][0]["fixes"][0]["artifactChanges"][0]["artifactLocation"], rel);
+}
+
+TEST_F(Cli, SarifRulesLinkTheirDocumentation) {
+  const auto j = json::parse(run_edsc({"check", "--format=sarif", corpus(kh_ko)}).output);
+  const auto& driver = j["runs"][0]["tool"]["driver"];
+  const std::string info = driver["informationUri"];
+  EXPECT_EQ(info.substr(info.size() - 7), "/cli.md") << info;
+  for (const auto& rule : driver["rules"]) {
+    const std::string id = rule["id"], help = rule["helpUri"];
+    EXPECT_EQ(help.substr(0, info.size() - 6), info.substr(0, info.size() - 6)) << help;
+    EXPECT_NE(help.find("/rules.md#" + id), std::string::npos) << help;
+  }
+  const auto size = std::find_if(driver["rules"].begin(), driver["rules"].end(),
+                                 [](const json& r) { return r["id"] == "param-data-size"; });
+  ASSERT_NE(size, driver["rules"].end());
+  EXPECT_EQ((*size)["name"], "ParamDataSize");
+}
+
 TEST_F(Cli, WarningsPassUnlessWerror) {
   const auto p = file("w.eds", warning_eds).string();
   const auto plain = run_edsc({"check", p});
