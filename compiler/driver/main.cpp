@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
     register_lsp(app, run);
     register_net(app, run);
     register_doc(app, run);
+    register_diff(app, run);
     try {
       app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

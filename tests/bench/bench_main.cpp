@@ -19,6 +19,7 @@
 #include "check/check_file.hpp"
 #include "check/context.hpp"
 #include "cst/cst.hpp"
+#include "diff/diff.hpp"
 #include "emit/header_view.hpp"
 #include "inputs.hpp"
 #include "io/read_file.hpp"
@@ -93,6 +94,12 @@ const stage stages[] = {
     {"emit_eds",
      [](const input_set&, const files_t& files) {
        for (const auto& f : files) benchmark::DoNotOptimize(cst::print(f->parsed.tree));
+     }},
+    // `edsc diff` of a file against itself: every entity matched and
+    // compared, the worst case for a diff that finds nothing.
+    {"diff_self",
+     [](const input_set&, const files_t& files) {
+       for (const auto& f : files) benchmark::DoNotOptimize(diff::compare(f->dev, f->dev).differences.size());
      }},
     {"emit_header",
      [](const input_set&, const files_t& files) {
