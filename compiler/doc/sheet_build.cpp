@@ -70,7 +70,9 @@ std::string reader::ref_text(const model::reference& r, bool with_name) const {
 namespace {
 
 std::string segment_text(const reader& r, const model::epath_segment& s) {
-  const auto number = s.has_param ? r.ref_text(s.param) : fmt::format("{}", s.value);
+  const auto number = s.has_param              ? r.ref_text(s.param)
+                      : !s.placeholder.empty() ? utf8(s.placeholder)
+                                               : fmt::format("{}", s.value);
   switch (s.kind) {
     case model::segment_kind::port: return fmt::format("port {}, link {}", number, s.link_address);
     case model::segment_kind::class_id:
@@ -81,6 +83,7 @@ std::string segment_text(const reader& r, const model::epath_segment& s) {
     case model::segment_kind::attribute: return fmt::format("attribute {}", number);
     case model::segment_kind::symbol: return fmt::format("symbol \"{}\"", utf8(s.symbol));
     case model::segment_kind::param: return r.ref_text(s.param);
+    case model::segment_kind::placeholder: return fmt::format("{} (filled in by the configuration tool)", utf8(s.placeholder));
     case model::segment_kind::unknown: return "undecoded bytes";
   }
   return {};

@@ -64,9 +64,7 @@ void register_diff(CLI::App& app, command_action& run) {
   auto* cmd = app.add_subcommand("diff", "Compare two EDS files by meaning and say what breaks a configured network");
   cmd->add_option("old", cli->before, "The EDS file a network was configured with")->required();
   cmd->add_option("new", cli->after, "The new EDS file")->required();
-  add_choice(cmd, "--color", cli->color,
-             {{"auto", color_mode::auto_detect}, {"always", color_mode::always}, {"never", color_mode::never}},
-             "Colour the text output: auto (on a terminal, the default), always, never");
+  add_color_option(cmd, cli->color);
   add_choice(cmd, "--format", cli->format, {"text", "json"},
              "Output format: text (the default) or json (docs/diff-json.schema.json)");
   add_choice(cmd, "--keying", cli->keying, {{"compatible", diff::keying::compatible}, {"exact", diff::keying::exact}},

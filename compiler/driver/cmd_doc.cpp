@@ -1,13 +1,13 @@
 // `edsc doc FILE -o device.html` and `edsc doc DIR -o site/`: datasheets a
 // person can read (docs/doc.md).
 #include <filesystem>
-#include <map>
 #include <memory>
 #include <thread>
 
 #include <fmt/format.h>
 
 #include "doc/site.hpp"
+#include "driver/choice.hpp"
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
 #include "io/collect_inputs.hpp"
@@ -108,10 +108,8 @@ void register_doc(CLI::App& app, command_action& run) {
   cmd->add_option("input", cli->input, "The EDS file, or a folder searched recursively for *.eds")->required();
   cmd->add_option("-o,--output", cli->output, "The page to write ('-' for standard output), or the site's folder")
       ->required();
-  const std::map<std::string, doc::page_format> formats{{"html", doc::page_format::html},
-                                                        {"md", doc::page_format::markdown}};
-  cmd->add_option("--format", cli->format, "html (default) or md (Markdown, bit maps as SVG files beside it)")
-      ->transform(CLI::CheckedTransformer(formats, CLI::ignore_case));
+  add_choice(cmd, "--format", cli->format, {{"html", doc::page_format::html}, {"md", doc::page_format::markdown}},
+             "html (the default) or md (Markdown, bit maps as SVG files beside it)");
   cmd->add_option("-j,--jobs", cli->jobs, "Files documented in parallel (default: one per core)");
   cmd->callback([&run, cli] { run = [cli] { return run_doc(*cli); }; });
 }

@@ -2,12 +2,12 @@
 // network file checked with its nodes' EDS files, and the scanner's images
 // laid out (docs/network.md).
 #include <filesystem>
-#include <map>
 #include <memory>
 
 #include <fmt/format.h>
 
 #include "diag/render_text.hpp"
+#include "driver/choice.hpp"
 #include "driver/commands.hpp"
 #include "driver/net_report.hpp"
 #include "driver/output.hpp"
@@ -102,17 +102,13 @@ void register_net(CLI::App& app, command_action& run) {
   auto map_cli = std::make_shared<net_cli>();
   auto* map = net->add_subcommand("map", "Lay out the scanner's input and output images as Automap does");
   map->add_option("network", map_cli->input, "The network file (TOML)")->required();
-  const std::map<std::string, map_format> formats{{"text", map_format::text}, {"json", map_format::json},
-                                                  {"svg", map_format::svg},   {"csv", map_format::csv},
-                                                  {"c", map_format::c},       {"modbus", map_format::modbus}};
-  map->add_option("--format", map_cli->map, "text, json, svg, csv (RSLogix 5000 alias tags), c (scanlist header), "
-                                            "modbus (register map)")
-      ->transform(CLI::CheckedTransformer(formats, CLI::ignore_case));
+  add_choice(map, "--format", map_cli->map,
+             {{"text", map_format::text}, {"json", map_format::json}, {"svg", map_format::svg},
+              {"csv", map_format::csv}, {"c", map_format::c}, {"modbus", map_format::modbus}},
+             "text (the default), json, svg, csv (RSLogix 5000 alias tags), c (scanlist header), "
+             "modbus (register map)");
   map->add_option("-o,--output", map_cli->output, "Write the map here (atomically) instead of standard output");
-  const std::map<std::string, color_mode> colors{
-      {"auto", color_mode::auto_detect}, {"always", color_mode::always}, {"never", color_mode::never}};
-  map->add_option("--color", map_cli->color, "Colour the diagnostics: auto, always, never")
-      ->transform(CLI::CheckedTransformer(colors, CLI::ignore_case));
+  add_color_option(map, map_cli->color);
   map->add_option("-W", map_cli->warning_flags, "Diagnostic flags as for check")->allow_extra_args(false);
   map->callback([&run, map_cli] { run = [map_cli] { return run_net_map(*map_cli); }; });
 }

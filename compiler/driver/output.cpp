@@ -30,11 +30,15 @@ void print_error(std::string_view message) {
   write_all(stderr, line);
 }
 
-void add_report_options(CLI::App* cmd, color_mode& color, report_format& format,
-                        std::vector<std::string>& warning_flags) {
+void add_color_option(CLI::App* cmd, color_mode& color) {
   add_choice(cmd, "--color", color,
              {{"auto", color_mode::auto_detect}, {"always", color_mode::always}, {"never", color_mode::never}},
              "Colour the text output: auto (on a terminal, the default), always, never");
+}
+
+void add_report_options(CLI::App* cmd, color_mode& color, report_format& format,
+                        std::vector<std::string>& warning_flags) {
+  add_color_option(cmd, color);
   add_choice(cmd, "--format", format,
              {{"text", report_format::text}, {"json", report_format::json}, {"sarif", report_format::sarif}},
              "Report format: text (the default), json, sarif (SARIF 2.1.0)");

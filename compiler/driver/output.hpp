@@ -21,6 +21,9 @@ bool write_all(std::FILE* stream, std::string_view s);
 
 void print_error(std::string_view message);  // "edsc: error: ..." on stderr
 
+// --color auto|always|never, for every command that colours text.
+void add_color_option(CLI::App* cmd, color_mode& color);
+
 // --color, --format and -W, shared by every command that reports diagnostics.
 void add_report_options(CLI::App* cmd, color_mode& color, report_format& format,
                         std::vector<std::string>& warning_flags);

@@ -151,8 +151,9 @@ std::string describe_epath(const model::epath& p, const model::device& dev) {
   if (p.symbolic) return "- a symbolic path: the tool asks for a tag name\n";
   std::string out;
   for (const auto& s : p.segments) {
-    std::string value = s.has_param ? fmt::format("[{}{}]", schema::stem_of(s.param.kind), s.param.number)
-                                    : fmt::format("{} (0x{:X})", s.value, s.value);
+    std::string value = s.has_param              ? fmt::format("[{}{}]", schema::stem_of(s.param.kind), s.param.number)
+                        : !s.placeholder.empty() ? fmt::format("`{}` (filled in by the tool)", s.placeholder)
+                                                 : fmt::format("{} (0x{:X})", s.value, s.value);
     if (s.has_param)
       if (const auto* prm = s.param.resolved() ? &dev.params[s.param.target] : nullptr; prm && prm->name.ok())
         value += fmt::format(" \"{}\"", prm->name.text);
@@ -165,6 +166,9 @@ std::string describe_epath(const model::epath& p, const model::device& dev) {
       case segment_kind::attribute: out += fmt::format("- attribute {}\n", value); break;
       case segment_kind::symbol: out += fmt::format("- symbol \"{}\"\n", s.symbol); break;
       case segment_kind::param: out += fmt::format("- {} (a segment chosen by the parameter)\n", value); break;
+      case segment_kind::placeholder:
+        out += fmt::format("- `{}`: a placeholder the configuration tool fills in when it connects\n", s.placeholder);
+        break;
       case segment_kind::unknown: out += "- bytes edsc does not decode\n"; break;
     }
   }

@@ -28,8 +28,14 @@ std::vector<std::string> subcommands() {
 TEST_F(Cli, HelpOfEverySubcommandShowsChoicesAsWords) {
   const auto commands = subcommands();
   ASSERT_GE(commands.size(), 9u);
-  for (const auto& cmd : commands) {
-    const auto r = run_edsc({cmd, "--help"});
+  std::vector<std::vector<std::string>> invocations;
+  for (const auto& cmd : commands) invocations.push_back({cmd, "--help"});
+  // Commands with commands of their own.
+  invocations.push_back({"net", "check", "--help"});
+  invocations.push_back({"net", "map", "--help"});
+  for (const auto& args : invocations) {
+    const auto r = run_edsc(args);
+    const auto& cmd = args[args.size() - 2];
     EXPECT_EQ(r.status, 0) << cmd << "\n" << r.output;
     // CLI11's renderings of a transformer, a member check and a range.
     for (const char* internal : {"ENUM", "->", "value in", ":{", "INT in ["}) {
