@@ -60,11 +60,16 @@ void check_icon(const check_context& ctx) {
   if (!id.icon_contents.ok() || data.empty()) return;  // invalid Base64 is reported by the value rules
   static constexpr std::array<std::uint8_t, 4> ico{0x00, 0x00, 0x01, 0x00};
   if (data.size() >= ico.size() && std::equal(ico.begin(), ico.end(), data.begin())) return;
-  const bool bmp = data.size() >= 2 && data[0] == 'B' && data[1] == 'M';
+  // A BMP is a vendor's deliberate choice (a whole product line writes it), so
+  // only a note; anything else is probably a damaged copy.
+  if (data.size() >= 2 && data[0] == 'B' && data[1] == 'M') {
+    ctx.report(diag_id::icon_bmp, ctx.where(id.icon_contents),
+               "IconContents decodes to a BMP image, not an ICO icon (00 00 01 00)");
+    return;
+  }
   ctx.report(diag_id::icon_not_ico, ctx.where(id.icon_contents),
-             bmp ? std::string("IconContents decodes to a BMP image, not an ICO icon (00 00 01 00)")
-                 : fmt::format("IconContents decodes to data starting {:02X} {:02X}, not an ICO icon (00 00 01 00)",
-                               data[0], data.size() > 1 ? data[1] : 0));
+             fmt::format("IconContents decodes to data starting {:02X} {:02X}, not an ICO icon (00 00 01 00)", data[0],
+                         data.size() > 1 ? data[1] : 0));
 }
 
 }  // namespace
