@@ -32,12 +32,6 @@ constexpr std::string_view text = R"([File]
 
 using V = std::vector<std::string>;
 
-V lines(const analysis& a, const std::vector<span>& spans) {
-  V out;
-  for (auto s : spans) out.push_back(where(a, s));
-  return out;
-}
-
 class LspVariantIo : public ::testing::Test {
  protected:
   std::unique_ptr<analysis> a = analyze_text(std::string(text));
