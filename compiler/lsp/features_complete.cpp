@@ -88,10 +88,12 @@ void keyword_items(const analysis& a, std::uint32_t section, std::vector<complet
 }
 
 // Every entry of the allowed kinds; `as_number` for fields that hold the N only.
-void target_items(const analysis& a, schema::ref_mask allowed, bool as_number, std::vector<completion_item>& out) {
+// InputN/OutputN are those of the field's own section (ref_index.hpp).
+void target_items(const analysis& a, schema::ref_mask allowed, bool as_number, bool variant_io,
+                  std::vector<completion_item>& out) {
   const auto& d = a.dev;
   auto add = [&](ref_kind k, std::uint32_t number, std::string detail, std::string_view doc, int kind) {
-    if ((allowed & schema::bit(k)) == 0 || d.find(k, number) == model::none) return;
+    if ((allowed & schema::bit(k)) == 0 || target_index(d, k, number, variant_io) == model::none) return;
     completion_item c;
     const auto name = fmt::format("{}{}", schema::stem_of(k), number);
     c.label = as_number ? std::to_string(number) : name;
@@ -116,8 +118,9 @@ void target_items(const analysis& a, schema::ref_mask allowed, bool as_number, s
   for (const auto& x : d.arrays) add(ref_kind::array, x.number, x.name.ok() ? fmt::format("\"{}\"", x.name.text) : "", {}, ck_reference);
   for (const auto& x : d.connections)
     add(ref_kind::connection, x.number, x.name.ok() ? fmt::format("\"{}\"", x.name.text) : "", {}, ck_reference);
-  for (const auto& x : d.io.inputs) add(ref_kind::input, x.number, x.name.ok() ? fmt::format("\"{}\"", x.name.text) : "", {}, ck_reference);
-  for (const auto& x : d.io.outputs) add(ref_kind::output, x.number, x.name.ok() ? fmt::format("\"{}\"", x.name.text) : "", {}, ck_reference);
+  const auto& io = variant_io ? d.variant_io : d.io;
+  for (const auto& x : io.inputs) add(ref_kind::input, x.number, x.name.ok() ? fmt::format("\"{}\"", x.name.text) : "", {}, ck_reference);
+  for (const auto& x : io.outputs) add(ref_kind::output, x.number, x.name.ok() ? fmt::format("\"{}\"", x.name.text) : "", {}, ck_reference);
 }
 
 void type_items(std::vector<completion_item>& out) {
@@ -147,8 +150,11 @@ void field_items(const analysis& a, const cst::entry& e, std::uint32_t index, st
     return;
   }
   if (d->refs != 0 && (d->type == value_type::reference || d->type == value_type::int_or_ref ||
-                       d->type == value_type::member || d->type == value_type::number_ref))
-    target_items(a, d->refs, d->type == value_type::number_ref, out);
+                       d->type == value_type::member || d->type == value_type::number_ref)) {
+    const auto* sd = section_desc_of(a.tree, e.section);
+    const bool variant_io = sd && variant_io_site(*sd, ref_kind::input);
+    target_items(a, d->refs, d->type == value_type::number_ref, variant_io, out);
+  }
   for (const auto w : d->words) {
     completion_item c;
     c.label = std::string(w);

@@ -95,8 +95,8 @@ struct target_text {
   std::string help;
 };
 
-target_text target_detail(const analysis& a, schema::ref_kind kind, std::uint32_t i, const cst::entry& entry,
-                          const schema::keyword_desc* desc) {
+target_text target_detail(const analysis& a, schema::ref_kind kind, std::uint32_t i, bool variant_io,
+                          const cst::entry& entry, const schema::keyword_desc* desc) {
   using schema::ref_kind;
   target_text out;
   switch (kind) {
@@ -121,7 +121,8 @@ target_text target_detail(const analysis& a, schema::ref_kind kind, std::uint32_
       break;
     }
     case ref_kind::input: case ref_kind::output: {
-      const auto& d = kind == ref_kind::input ? a.dev.io.inputs[i] : a.dev.io.outputs[i];
+      const auto& io = variant_io ? a.dev.variant_io : a.dev.io;
+      const auto& d = kind == ref_kind::input ? io.inputs[i] : io.outputs[i];
       if (d.name.ok()) out.line = fmt::format("\"{}\"", d.name.text);
       if (d.size.is_integer()) out.line += fmt::format(", {}", bytes_and_bits(d.size.magnitude));
       if (d.help.ok()) out.help = std::string(d.help.text);
@@ -135,13 +136,13 @@ target_text target_detail(const analysis& a, schema::ref_kind kind, std::uint32_
 }
 
 // What a reference names: the target's name and summary line.
-std::string target_summary(const analysis& a, schema::ref_kind kind, std::uint32_t number) {
+std::string target_summary(const analysis& a, schema::ref_kind kind, std::uint32_t number, bool variant_io) {
   std::string out = fmt::format("**{}{}**", schema::stem_of(kind), number);
-  const auto e = defining_entry(a.dev, kind, number);
+  const auto e = defining_entry(a.dev, kind, number, variant_io);
   if (e == cst::npos) return out + " — not defined in this file";
   const auto& entry = a.tree.entries[e];
   const auto m = keyword_desc_of(a.tree, entry);
-  const auto d = target_detail(a, kind, a.dev.find(kind, number), entry, m.desc);
+  const auto d = target_detail(a, kind, target_index(a.dev, kind, number, variant_io), variant_io, entry, m.desc);
   if (!d.line.empty()) out += " " + d.line;
   if (!d.help.empty()) out += "\n\n" + d.help;
   if (m.desc) out += fmt::format("\n\n{}", summary_of(*m.desc));
@@ -167,9 +168,10 @@ std::string keyword_hover(const analysis& a, const cst::entry& e) {
   const bool owned = m.desc->id == entry_id::enum_n || m.desc->id == entry_id::enum_par_n;
   if (owned) kind = schema::ref_kind::param;
   if (owned || defines(*m.desc, kind)) {
-    if (const auto i = a.dev.find(kind, number); i != model::none) {
-      const auto& def = t.entries[defining_entry(a.dev, kind, number)];
-      const auto d = target_detail(a, kind, i, def, keyword_desc_of(t, def).desc);
+    const bool variant_io = variant_io_site(*sd, kind);
+    if (const auto i = target_index(a.dev, kind, number, variant_io); i != model::none) {
+      const auto& def = t.entries[defining_entry(a.dev, kind, number, variant_io)];
+      const auto d = target_detail(a, kind, i, variant_io, def, keyword_desc_of(t, def).desc);
       if (!d.line.empty()) out += fmt::format("\n\n{}{}", owned ? fmt::format("Of Param{}: ", number) : "", d.line);
       if (!owned && !d.help.empty()) out += "\n\n" + d.help;
     } else if (owned) {
@@ -264,7 +266,7 @@ std::optional<hover_info> hover_raw(const analysis& a, std::uint32_t offset) {
   const auto& e = t.entries[loc.entry];
   if (loc.on_keyword) return hover_info{e.keyword, keyword_hover(a, e)};
   if (const auto s = site_at(a, offset)) {
-    std::string md = target_summary(a, s->kind, s->number);
+    std::string md = target_summary(a, s->kind, s->number, s->variant_io);
     if (loc.field != cst::npos) {
       const auto m = keyword_desc_of(t, e);
       if (const auto* d = m.desc ? schema::field_at(*m.desc, loc.field) : nullptr)

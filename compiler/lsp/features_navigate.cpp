@@ -12,7 +12,7 @@ namespace edsc::lsp {
 std::vector<span> definition(const analysis& a, std::uint32_t offset) {
   const auto s = site_at(a, offset);
   if (!s) return {};
-  if (auto d = declaration_of(a, s->kind, s->number)) return {*d};
+  if (auto d = declaration_of(a, s->kind, s->number, s->variant_io)) return {*d};
   return {};
 }
 
@@ -21,7 +21,7 @@ std::vector<span> references(const analysis& a, std::uint32_t offset, bool inclu
   const auto* s = idx.at(offset);
   if (!s) return {};
   std::vector<span> out;
-  for (const auto* r : idx.of(s->kind, s->number))
+  for (const auto* r : idx.of(s->kind, s->number, s->variant_io))
     if (include_declaration || !r->declaration) out.push_back(r->name);
   return out;
 }

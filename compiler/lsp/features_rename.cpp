@@ -13,7 +13,7 @@ namespace {
 // The entry to renumber: a site under the cursor whose target is defined.
 std::optional<ref_site> renamable(const analysis& a, std::uint32_t offset) {
   auto s = site_at(a, offset);
-  if (!s || defining_entry(a.dev, s->kind, s->number) == cst::npos) return std::nullopt;
+  if (!s || defining_entry(a.dev, s->kind, s->number, s->variant_io) == cst::npos) return std::nullopt;
   return s;
 }
 
@@ -55,10 +55,10 @@ rename_result rename(const analysis& a, std::uint32_t offset, std::string_view n
   }
   if (number == s->number) return r;
   const ref_index idx(a);
-  const auto taken = idx.of(s->kind, number);
+  const auto taken = idx.of(s->kind, number, s->variant_io);
   if (!taken.empty()) {
     const auto target = name_of(s->kind, number);
-    const auto def = declaration_of(a, s->kind, number);
+    const auto def = declaration_of(a, s->kind, number, s->variant_io);
     const auto at = def ? *def : taken.front()->name;
     r.error = def ? fmt::format("{} is taken: it is defined on line {}.", target, a.source->position(at.begin).line)
                   : fmt::format("{} is taken: it is named on line {} though not defined.", target,
@@ -66,7 +66,7 @@ rename_result rename(const analysis& a, std::uint32_t offset, std::string_view n
     return r;
   }
   const auto digits = std::to_string(number);
-  for (const auto* site : idx.of(s->kind, s->number)) r.edits.push_back({site->digits, digits});
+  for (const auto* site : idx.of(s->kind, s->number, s->variant_io)) r.edits.push_back({site->digits, digits});
   return r;
 }
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "source/line_starts.hpp"
+
 namespace edsc::lsp {
 
 namespace {
@@ -38,16 +40,7 @@ std::uint32_t utf16_length(std::string_view s) {
   return units;
 }
 
-line_index::line_index(std::string_view text) : text_(text) {
-  starts_.push_back(0);
-  const auto n = text.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const char c = text[i];
-    if (c == '\n' || (c == '\r' && (i + 1 == n || text[i + 1] != '\n'))) {
-      starts_.push_back(static_cast<std::uint32_t>(i + 1));
-    }
-  }
-}
+line_index::line_index(std::string_view text) : text_(text), starts_(line_starts(text)) {}
 
 position line_index::to_position(std::uint32_t offset) const {
   offset = std::min<std::uint32_t>(offset, static_cast<std::uint32_t>(text_.size()));

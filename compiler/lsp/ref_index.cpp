@@ -90,6 +90,7 @@ void entry_sites(const analysis& a, std::uint32_t entry, const schema::section_d
   const auto& e = t.entries[entry];
   const auto m = schema::find_keyword(sd, t.text(e.keyword));
   if (!m.desc) return;
+  const auto first = out.size();
   if (m.desc->numbered) {
     ref_site s;
     s.number = m.number;
@@ -108,10 +109,12 @@ void entry_sites(const analysis& a, std::uint32_t entry, const schema::section_d
     const auto* d = schema::field_at(*m.desc, i);
     if (d && (d->refs != 0 || d->type == schema::value_type::epath)) field_sites(a, t.field_of(e, i), *d, entry, out);
   }
+  for (auto i = first; i < out.size(); ++i) out[i].variant_io = variant_io_site(sd, out[i].kind);
 }
 
-namespace {
-}  // namespace
+bool variant_io_site(const schema::section_desc& sd, ref_kind kind) {
+  return sd.family == schema::section_family::variant_io_info && (kind == ref_kind::input || kind == ref_kind::output);
+}
 
 bool defines(const schema::keyword_desc& k, ref_kind& kind) {
   using schema::entry_id;
@@ -156,16 +159,26 @@ const ref_site* ref_index::at(std::uint32_t offset) const {
   return touches(it->name, offset) ? &*it : nullptr;
 }
 
-std::vector<const ref_site*> ref_index::of(ref_kind kind, std::uint32_t number) const {
+std::vector<const ref_site*> ref_index::of(ref_kind kind, std::uint32_t number, bool variant_io) const {
   std::vector<const ref_site*> out;
   for (const auto& s : sites_)
-    if (s.kind == kind && s.number == number) out.push_back(&s);
+    if (s.kind == kind && s.number == number && s.variant_io == variant_io) out.push_back(&s);
   return out;
 }
 
-std::uint32_t defining_entry(const model::device& d, ref_kind kind, std::uint32_t number) {
-  const auto i = d.find(kind, number);
+std::uint32_t target_index(const model::device& d, ref_kind kind, std::uint32_t number, bool variant_io) {
+  // The model indexes [IO_Info] only; [Variant_IO_Info] holds a handful of entries.
+  if (!variant_io || (kind != ref_kind::input && kind != ref_kind::output)) return d.find(kind, number);
+  const auto& list = kind == ref_kind::input ? d.variant_io.inputs : d.variant_io.outputs;
+  for (std::uint32_t i = 0; i < list.size(); ++i)
+    if (list[i].number == number) return i;
+  return model::none;
+}
+
+std::uint32_t defining_entry(const model::device& d, ref_kind kind, std::uint32_t number, bool variant_io) {
+  const auto i = target_index(d, kind, number, variant_io);
   if (i == model::none) return cst::npos;
+  const auto& io = variant_io ? d.variant_io : d.io;
   switch (kind) {
     case ref_kind::param: case ref_kind::proxy_param: case ref_kind::proxied_param:
     case ref_kind::constructed_param: return d.params[i].from.entry;
@@ -177,15 +190,15 @@ std::uint32_t defining_entry(const model::device& d, ref_kind kind, std::uint32_
     case ref_kind::connection: return d.connections[i].from.entry;
     case ref_kind::proxy_connection: case ref_kind::proxied_connection: return d.proxy_connections[i].from.entry;
     case ref_kind::group: return d.groups[i].from.entry;
-    case ref_kind::input: return d.io.inputs[i].from.entry;
-    case ref_kind::output: return d.io.outputs[i].from.entry;
+    case ref_kind::input: return io.inputs[i].from.entry;
+    case ref_kind::output: return io.outputs[i].from.entry;
     case ref_kind::count_: break;
   }
   return cst::npos;
 }
 
-std::optional<span> declaration_of(const analysis& a, ref_kind kind, std::uint32_t number) {
-  const auto e = defining_entry(a.dev, kind, number);
+std::optional<span> declaration_of(const analysis& a, ref_kind kind, std::uint32_t number, bool variant_io) {
+  const auto e = defining_entry(a.dev, kind, number, variant_io);
   if (e == cst::npos || e >= a.tree.entries.size()) return std::nullopt;
   return a.tree.entries[e].keyword;
 }

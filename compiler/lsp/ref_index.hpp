@@ -5,6 +5,11 @@
 // belong to a parameter (`Enum5` in [Params], `Param5` in [EnumPar]).
 // Read from the tree by the schema, as lowering reads it; navigation, rename and hover
 // share it.
+//
+// InputN/OutputN are numbered per section: [IO_Info] and [Variant_IO_Info]
+// each define their own Input1 (EDS_FORMAT.md §3.5), and the default of an
+// xxxInfo entry names the InputN/OutputN of its own section. A target is
+// therefore (kind, number, variant_io).
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -20,6 +25,7 @@ struct ref_site {
   std::uint32_t number = 0;
   schema::ref_kind kind = schema::ref_kind::param;
   bool declaration = false;  // the entry's own keyword
+  bool variant_io = false;   // an InputN/OutputN site in [Variant_IO_Info]
   std::uint32_t entry = cst::npos;  // CST entry the site is in
 };
 
@@ -29,8 +35,9 @@ class ref_index {
 
   // The site the cursor touches, or nullptr.
   [[nodiscard]] const ref_site* at(std::uint32_t offset) const;
-  // Every site naming (kind, number), in file order.
-  [[nodiscard]] std::vector<const ref_site*> of(schema::ref_kind kind, std::uint32_t number) const;
+  // Every site naming (kind, number) in [Variant_IO_Info] or elsewhere, in file order.
+  [[nodiscard]] std::vector<const ref_site*> of(schema::ref_kind kind, std::uint32_t number,
+                                                bool variant_io = false) const;
   [[nodiscard]] const std::vector<ref_site>& sites() const { return sites_; }
 
  private:
@@ -42,11 +49,20 @@ class ref_index {
 // The sites of one entry, in order: its keyword, then its fields.
 void entry_sites(const analysis& a, std::uint32_t entry, const schema::section_desc& sd, std::vector<ref_site>& out);
 
+// True when (kind) named in section `sd` is an InputN/OutputN of [Variant_IO_Info].
+[[nodiscard]] bool variant_io_site(const schema::section_desc& sd, schema::ref_kind kind);
+
+// Where (kind, number) is in the model's vector for its kind (d.params,
+// d.io.inputs, d.variant_io.inputs...), or model::none. The first definition wins.
+[[nodiscard]] std::uint32_t target_index(const model::device& d, schema::ref_kind kind, std::uint32_t number,
+                                         bool variant_io = false);
 // The declaration of (kind, number): the keyword of its first definition,
-// found through the model's index without building a ref_index.
-[[nodiscard]] std::optional<span> declaration_of(const analysis& a, schema::ref_kind kind, std::uint32_t number);
+// found through the model without building a ref_index.
+[[nodiscard]] std::optional<span> declaration_of(const analysis& a, schema::ref_kind kind, std::uint32_t number,
+                                                 bool variant_io = false);
 // The CST entry defining (kind, number), or cst::npos.
-[[nodiscard]] std::uint32_t defining_entry(const model::device& d, schema::ref_kind kind, std::uint32_t number);
+[[nodiscard]] std::uint32_t defining_entry(const model::device& d, schema::ref_kind kind, std::uint32_t number,
+                                           bool variant_io = false);
 
 // A numbered keyword of the schema that defines a reference target, with
 // the kind it defines; false for other keywords.

@@ -2,23 +2,15 @@
 
 #include <algorithm>
 
+#include "source/line_starts.hpp"
+
 namespace edsc {
 
 source_file::source_file(std::string path, std::string text)
     : path_(std::move(path)), text_(std::move(text)) {}
 
 void source_file::index_lines() const {
-  std::call_once(indexed_, [this] {
-    line_starts_.push_back(0);
-    const auto n = text_.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const char c = text_[i];
-      // CR, LF and CRLF each end one line, as the grammar treats them.
-      if (c == '\n' || (c == '\r' && (i + 1 == n || text_[i + 1] != '\n'))) {
-        line_starts_.push_back(static_cast<std::uint32_t>(i + 1));
-      }
-    }
-  });
+  std::call_once(indexed_, [this] { line_starts_ = line_starts(text_); });
 }
 
 std::uint32_t source_file::line_count() const {

@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "check/check_file.hpp"
 #include "io/read_file.hpp"
@@ -38,6 +39,13 @@ inline std::string_view text_at(const analysis& a, span s) { return a.text().sub
 // The line (1-based) a span starts on, so span lists read as `line:text`.
 inline std::string where(const analysis& a, span s) {
   return std::to_string(a.source->position(s.begin).line) + ":" + std::string(text_at(a, s));
+}
+
+// `line:text` of each span, to compare span lists.
+inline std::vector<std::string> lines(const analysis& a, const std::vector<span>& spans) {
+  std::vector<std::string> out;
+  for (auto s : spans) out.push_back(where(a, s));
+  return out;
 }
 
 // Edits applied back to front (they do not overlap).

@@ -4,12 +4,6 @@
 namespace edsc::test {
 namespace {
 
-std::vector<std::string> lines(const analysis& a, const std::vector<span>& spans) {
-  std::vector<std::string> out;
-  for (auto s : spans) out.push_back(where(a, s));
-  return out;
-}
-
 using V = std::vector<std::string>;
 
 TEST(LspDefinition, ParamReferenceInConnectionJumpsToTheParam) {
