@@ -3,6 +3,7 @@
 // an unrelated addition; then compared field by field.
 #include <map>
 #include <unordered_map>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -59,22 +60,31 @@ struct matcher {
     taken[j] = true;
   }
 
-  // One pass: for every unmatched old parameter, the first unmatched new one
-  // with the same key (same number first).
+  // One pass with one key: first every unmatched old parameter that has an
+  // unmatched new one with the same key and number, then the rest with the
+  // first unmatched new one of that key in file order. So a parameter that
+  // kept its number is never taken by an identical one that moved, and
+  // identical entries (a vendor's repeated ParamN) pair in order.
   template <class Key>
   void by(Key&& k) {
-    std::unordered_multimap<std::string, std::uint32_t> index;
+    std::unordered_map<std::string, std::vector<std::uint32_t>> index;
     for (std::uint32_t j = 0; j < b.params.size(); ++j)
-      if (!taken[j]) index.emplace(k(b, b.params[j]), j);
+      if (!taken[j]) index[k(b, b.params[j])].push_back(j);
+    std::vector<const std::vector<std::uint32_t>*> same_key(a.params.size(), nullptr);
     for (std::uint32_t i = 0; i < a.params.size(); ++i) {
       if (match[i] != model::none) continue;
-      const auto [lo, hi] = index.equal_range(k(a, a.params[i]));
-      std::uint32_t best = model::none;
-      for (auto it = lo; it != hi; ++it) {
-        if (taken[it->second]) continue;
-        if (best == model::none || b.params[it->second].number == a.params[i].number) best = it->second;
+      const auto it = index.find(k(a, a.params[i]));
+      if (it != index.end()) same_key[i] = &it->second;
+    }
+    for (const bool same_number : {true, false}) {
+      for (std::uint32_t i = 0; i < a.params.size(); ++i) {
+        if (match[i] != model::none || !same_key[i]) continue;
+        for (const auto j : *same_key[i]) {
+          if (taken[j] || (same_number && b.params[j].number != a.params[i].number)) continue;
+          pair(i, j);
+          break;
+        }
       }
-      if (best != model::none) pair(i, best);
     }
   }
 };

@@ -155,6 +155,25 @@ TEST(Diff, ChangedParameterIsMatchedByName) {
   EXPECT_EQ(c.find("param-enum-text")->level, impact::cosmetic);
 }
 
+// Identical parameters (vendors repeat a spare or reserved entry): the one
+// that kept its number pairs with itself, so a removed copy is one removal,
+// not a chain of renumberings, and a file with copies matches itself.
+TEST(Diff, IdenticalParametersPairByNumberFirst) {
+  const std::string spare = " = 0, , , 0x0000, 0xC6, 1, \"Spare\", \"\", \"\", 0, 255, 0, , , , , , , , , 0;\n";
+  const auto with = [&](std::initializer_list<int> numbers) {
+    std::string params;
+    for (const int n : numbers) params += "        Param" + std::to_string(n) + spare;
+    return replaced(device_eds, "[Assembly]", params + "[Assembly]");
+  };
+  const auto c = compare(with({7, 8, 9}), with({8, 9}));
+  EXPECT_EQ(c.kinds(), (std::vector<std::string>{"param-removed"})) << c.dump();
+  EXPECT_EQ(c.r.differences.at(0).subject, "Param7 \"Spare\"");
+  EXPECT_TRUE(compare(with({7, 7, 8}), with({7, 7, 8})).r.differences.empty());
+  const auto moved = compare(with({7, 8}), with({8, 10}));
+  EXPECT_EQ(moved.kinds(), (std::vector<std::string>{"param-renumbered"})) << moved.dump();
+  EXPECT_EQ(moved.r.differences.at(0).message, "renumbered: Param7 is now Param10");
+}
+
 TEST(Diff, AddedAndRemovedParameters) {
   const auto added = replaced(device_eds, "[Assembly]",
                               "        Param4 = 0, , , 0x0000, 0xC8, 4, \"Hours\", \"h\", \"\", 0, 100000, 0, , , , , , , , , 0;\n"
