@@ -5,6 +5,7 @@
 // passed, else a description of the broken invariant; a crash, leak or
 // sanitizer report is the other way to fail.
 #include <algorithm>
+#include <cctype>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -14,6 +15,7 @@
 
 #include "check/check_file.hpp"
 #include "cst/cst.hpp"
+#include "diff/diff.hpp"
 #include "edit/analyze.hpp"
 #include "edit/editor.hpp"
 #include "edit/fingerprint.hpp"
@@ -87,13 +89,103 @@ inline std::string header_body(std::string_view input) {
   return {};
 }
 
+// The language server on an EDS document: input that is neither a framed
+// stream nor JSON lines is opened as a document, and every feature is asked
+// for at positions spread over it, then once more after an edit, so the
+// fuzzer's EDS mutations reach hover, navigation, completion, rename,
+// symbols, formatting and code actions.
+inline std::vector<std::string> lsp_document_session(std::string_view text) {
+  using nlohmann::json;
+  std::vector<std::string> out;
+  int id = 0;
+  const auto dump = [](const json& j) { return j.dump(-1, ' ', false, json::error_handler_t::replace); };
+  const auto request = [&](const char* method, json params) {
+    out.push_back(dump({{"jsonrpc", "2.0"}, {"id", ++id}, {"method", method}, {"params", std::move(params)}}));
+  };
+  const auto notify = [&](const char* method, json params) {
+    out.push_back(dump({{"jsonrpc", "2.0"}, {"method", method}, {"params", std::move(params)}}));
+  };
+  const json doc = {{"uri", "file:///fuzz.eds"}};
+  request("initialize", {{"capabilities", json::object()}});
+  notify("initialized", json::object());
+  notify("textDocument/didOpen",
+         {{"textDocument", {{"uri", "file:///fuzz.eds"}, {"languageId", "eds"}, {"version", 1}, {"text", text}}}});
+  std::vector<std::size_t> starts{0};
+  for (std::size_t i = 0; i < text.size(); ++i)
+    if (text[i] == '\n') starts.push_back(i + 1);
+  const std::size_t lines = starts.size();
+  const std::size_t probes = std::min<std::size_t>(lines, 12);
+  // Per probe two cursors: on the line's first word (a keyword or section
+  // name: definitions and renames start there) and at a column taken from
+  // the text itself, so the fuzzer steers it (past the line's end included).
+  const auto at = [&](std::size_t k, bool first_word) {
+    const std::size_t line = k * lines / probes;
+    const std::size_t len = (line + 1 < lines ? starts[line + 1] - 1 : text.size()) - starts[line];
+    std::size_t column = 0;
+    if (first_word) {
+      while (column < len && (text[starts[line] + column] == ' ' || text[starts[line] + column] == '\t')) ++column;
+    } else {
+      column = static_cast<unsigned char>(text.empty() ? 0 : text[(starts[line] + k) % text.size()]) % (len + 2);
+    }
+    return json{{"line", line}, {"character", column}};
+  };
+  const auto everything_at = [&](const json& pos) {
+    const json tp = {{"textDocument", doc}, {"position", pos}};
+    request("textDocument/hover", tp);
+    request("textDocument/definition", tp);
+    request("textDocument/references", {{"textDocument", doc}, {"position", pos}, {"context", {{"includeDeclaration", true}}}});
+    request("textDocument/completion", tp);
+    request("textDocument/prepareRename", tp);
+    // Renames within the family of the word under the cursor (Param7 ->
+    // Param1, likely taken, and Param1007, likely free), and across families.
+    const std::size_t line = pos["line"], column = pos["character"];
+    std::size_t b = starts[line] + column, e = b;
+    while (e < text.size() && std::isalpha(static_cast<unsigned char>(text[e]))) ++e;
+    const std::size_t digits = e;
+    while (e < text.size() && e < digits + 6 && std::isdigit(static_cast<unsigned char>(text[e]))) ++e;
+    std::vector<std::string> names{"Param2", "Assem9999"};
+    if (b < digits && digits < e) {
+      const std::string stem(text.substr(b, digits - b));
+      names = {stem + "1", stem + std::to_string(std::stoul(std::string(text.substr(digits, e - digits))) + 1000)};
+    }
+    for (const auto& name : names)
+      request("textDocument/rename", {{"textDocument", doc}, {"position", pos}, {"newName", name}});
+    request("textDocument/codeAction", {{"textDocument", doc},
+                                        {"range", {{"start", pos}, {"end", pos}}},
+                                        {"context", {{"diagnostics", json::array()}}}});
+  };
+  for (std::size_t k = 0; k < probes; ++k)
+    for (const bool first_word : {true, false}) everything_at(at(k, first_word));
+  request("textDocument/documentSymbol", {{"textDocument", doc}});
+  request("textDocument/formatting", {{"textDocument", doc}, {"options", {{"tabSize", 4}, {"insertSpaces", true}}}});
+  request("textDocument/codeAction", {{"textDocument", doc},
+                                      {"range", {{"start", {{"line", 0}, {"character", 0}}}, {"end", {{"line", lines}, {"character", 0}}}}},
+                                      {"context", {{"diagnostics", json::array()}, {"only", {"source.fixAll"}}}}});
+  // An incremental edit: a line from the middle copied to the start, then the
+  // features once more on the changed text.
+  const std::size_t mid = lines / 2;
+  const auto mid_text = text.substr(starts[mid], (mid + 1 < lines ? starts[mid + 1] : text.size()) - starts[mid]);
+  const json origin = {{"line", 0}, {"character", 0}};
+  json change = {{"range", {{"start", origin}, {"end", origin}}}, {"text", mid_text}};
+  notify("textDocument/didChange", {{"textDocument", {{"uri", "file:///fuzz.eds"}, {"version", 2}}},
+                                    {"contentChanges", json::array({std::move(change)})}});
+  everything_at(at(probes / 2, true));
+  everything_at(at(probes / 2, false));
+  request("shutdown", nullptr);
+  notify("exit", nullptr);
+  return out;
+}
+
 // The language server on a message stream: input starting with "Content-"
-// is the raw byte stream (framing included); any other input is one message
-// body per line after an initialize, so mutations reach the handlers. Every
+// is the raw byte stream (framing included); input starting with "{" is one
+// message body per line after an initialize, so mutations reach the
+// handlers; anything else is an EDS document (lsp_document_session). Every
 // request and every broken message gets exactly one answer, every answer is
-// JSON, and nothing throws.
+// JSON, nothing throws, and no handler fails inside (InternalError, a log
+// line).
 inline std::string lsp_body(std::string_view input) {
   std::vector<std::string> bodies;
+  bool document = false;
   if (input.substr(0, 8) == "Content-") {
     std::size_t at = 0;
     lsp::frame_reader reader([&](char* buf, std::size_t n) {
@@ -105,7 +197,7 @@ inline std::string lsp_body(std::string_view input) {
     for (auto f = reader.next(); f.what != lsp::frame::kind::end; f = reader.next()) {
       if (f.what == lsp::frame::kind::message) bodies.push_back(std::move(f.body));
     }
-  } else {
+  } else if (input.substr(0, 1) == "{") {
     bodies.emplace_back(R"({"jsonrpc":"2.0","id":0,"method":"initialize","params":{"capabilities":{}}})");
     for (std::size_t at = 0; at <= input.size();) {
       auto eol = input.find('\n', at);
@@ -113,14 +205,33 @@ inline std::string lsp_body(std::string_view input) {
       bodies.emplace_back(input.substr(at, eol - at));
       at = eol + 1;
     }
+  } else {
+    bodies = lsp_document_session(input);
+    document = true;
   }
   std::size_t answers = 0, expected = 0;
   std::string broken;
-  lsp::server srv({}, [&](const std::string& body) {
-    const auto j = lsp::json::parse(body, nullptr, false);
-    if (j.is_discarded() || !j.is_object()) broken = "the server sent a message that is not a JSON object";
-    else if (j.contains("id") && !j.contains("method")) ++answers;
-  });
+  const auto fail = [&](std::string why) {
+    if (broken.empty()) broken = std::move(why);
+  };
+  lsp::server srv(
+      {},
+      [&](const std::string& body) {
+        const auto j = lsp::json::parse(body, nullptr, false);
+        if (j.is_discarded() || !j.is_object()) return fail("the server sent a message that is not a JSON object");
+        if (!j.contains("id") || j.contains("method")) return;
+        ++answers;
+        if (j.contains("error") && j["error"].value("code", 0) == static_cast<int>(lsp::error_code::internal_error))
+          fail("internal error: " + j["error"].value("message", std::string()));
+      },
+      // The server logs what went wrong in a handler. With well-formed
+      // messages (the document mode) any such line is a bug; with fuzzed
+      // ones only an internal error or a failed analysis is.
+      [&](std::string_view line) {
+        if (document || line.find("internal error") != std::string_view::npos ||
+            line.find(": diagnostics of ") != std::string_view::npos)
+          fail(std::string(line));
+      });
   for (const auto& b : bodies) {
     if (srv.exited()) break;
     const auto kind = lsp::parse_incoming(b).what;
@@ -157,6 +268,26 @@ inline std::string network_body(std::string_view input) {
   (void)network::render_map_csv(m);
   (void)network::render_map_c(m);
   (void)network::render_map_modbus(m);
+  return {};
+}
+
+// `edsc diff` on two files: the input up to its first NUL byte is the old
+// file, the rest the new one (no NUL: the input against itself). Both
+// renderings work on any pair and the JSON parses; a file diffed against an
+// identical copy shows no difference (diff refuses files with syntax errors,
+// so those only have to survive).
+inline std::string diff_body(std::string_view input) {
+  const auto nul = input.find('\0');
+  const auto old_text = input.substr(0, nul);
+  const auto new_text = nul == std::string_view::npos ? input : input.substr(nul + 1);
+  const auto a = edit::analyze("old.eds", std::string(old_text));
+  const auto b = edit::analyze("new.eds", std::string(new_text));
+  const auto r = diff::compare(*a, *b);
+  (void)diff::render_text(r, *a, *b, {});
+  if (!nlohmann::json::accept(diff::render_json(r, *a, *b))) return "diff JSON does not parse";
+  const auto same = edit::analyze("new.eds", std::string(old_text));
+  if (!a->has_syntax_errors() && !diff::compare(*a, *same).differences.empty())
+    return "a file differs from an identical copy";
   return {};
 }
 

@@ -16,8 +16,8 @@ namespace fs = std::filesystem;
 
 using body = std::string (*)(std::string_view);
 
-void replay(const char* target, body run) {
-  const fs::path dir = fs::path(EDSC_TESTS_DIR) / "fuzz" / "regressions" / target;
+void replay(const char* target, body run, const char* folder = "regressions") {
+  const fs::path dir = fs::path(EDSC_TESTS_DIR) / "fuzz" / folder / target;
   if (!fs::is_directory(dir)) GTEST_SKIP() << "no regressions for " << target;
   for (const auto& e : fs::directory_iterator(dir)) {
     if (!e.is_regular_file()) continue;
@@ -36,12 +36,14 @@ TEST(FuzzRegressions, Edit) { replay("edit", edit_body); }
 TEST(FuzzRegressions, Header) { replay("header", header_body); }
 TEST(FuzzRegressions, Lsp) { replay("lsp", lsp_body); }
 TEST(FuzzRegressions, Network) { replay("network", network_body); }
+TEST(FuzzRegressions, Diff) { replay("diff", diff_body); }
+TEST(FuzzRegressions, DiffSeedPairs) { replay("diff", diff_body, "seeds"); }
 
 // Every body also runs on a few shapes the fuzzers start from.
 TEST(FuzzRegressions, Seeds) {
   for (const std::string& input : {std::string(), std::string("["), std::string("[File]\nA = {{{{"),
                                   std::string("\xff\xfe\0", 3)}) {
-    const body bodies[] = {parse_body, check_body, fmt_body, edit_body, header_body, lsp_body, network_body};
+    const body bodies[] = {parse_body, check_body, fmt_body, edit_body, header_body, lsp_body, network_body, diff_body};
     for (const body run : bodies) EXPECT_EQ(run(input), "");
   }
 }
