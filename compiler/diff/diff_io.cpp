@@ -4,6 +4,7 @@
 
 #include "cst/cst.hpp"
 #include "diff/context.hpp"
+#include "diff/pairing.hpp"
 
 namespace edsc::diff::detail {
 
@@ -145,9 +146,11 @@ struct io_pass {
   void data_sets(bool output) {
     const auto& xs = output ? x.outputs : x.inputs;
     const auto& ys = output ? y.outputs : y.inputs;
-    for (const auto& p : xs) {
+    const auto m = pair_by_key(xs, ys, [](const io_data& d) { return std::uint64_t{d.number}; });
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+      const auto& p = xs[i];
       c.cover(p.from, {});
-      if (const auto* q = find(y, output, p.number)) {
+      if (const auto* q = m.partner[i]) {
         data_pair(p, *q);
         continue;
       }
@@ -156,9 +159,10 @@ struct io_pass {
                               : "a scanner that exchanges this data with the node can no longer do so");
       d.before = at(p.from, bytes(size_of(p)));
     }
-    for (const auto& q : ys) {
+    for (std::size_t j = 0; j < ys.size(); ++j) {
+      const auto& q = ys[j];
       c.cover({}, q.from);
-      if (find(x, output, q.number)) continue;
+      if (m.paired[j]) continue;
       auto& d = c.add(group::io, impact::additive, "io-data-added", section + ' ' + data_label(q),
                       fmt::format("added ({})", bytes(size_of(q))), "new data a scanner may choose; nothing configured changes");
       d.after = at(q.from, bytes(size_of(q)));

@@ -7,6 +7,7 @@
 
 #include "cst/cst.hpp"
 #include "diff/context.hpp"
+#include "diff/pairing.hpp"
 #include "emit/header_parts.hpp"
 
 namespace edsc::diff::detail {
@@ -66,12 +67,6 @@ std::string label(const device& d, const assembly& a) {
   return name.empty() ? std::string(kw) : fmt::format("{} \"{}\"", kw, brief(name, 40));
 }
 
-const assembly* find(const device& d, const assembly& a) {
-  for (const auto& x : d.assemblies)
-    if (x.kind == a.kind && x.number == a.number) return &x;
-  return nullptr;
-}
-
 void compare_pair(context& c, const assembly& x, const assembly& y) {
   const auto subject = "[Assembly] " + label(c.b, y);
   auto field = [&](const value& u, const value& v, impact i, const char* kind, const char* what, const char* why) {
@@ -118,9 +113,13 @@ void compare_pair(context& c, const assembly& x, const assembly& y) {
 }  // namespace
 
 void compare_assemblies(context& c) {
-  for (const auto& x : c.a.assemblies) {
+  const auto m = pair_by_key(c.a.assemblies, c.b.assemblies, [](const assembly& x) {
+    return std::uint64_t{static_cast<std::uint32_t>(x.kind)} << 32 | x.number;
+  });
+  for (std::size_t i = 0; i < c.a.assemblies.size(); ++i) {
+    const auto& x = c.a.assemblies[i];
     c.cover(x.from, {});
-    if (const auto* y = find(c.b, x)) {
+    if (const auto* y = m.partner[i]) {
       compare_pair(c, x, *y);
       continue;
     }
@@ -128,9 +127,10 @@ void compare_assemblies(context& c) {
                     "connections configured with this assembly can no longer be made");
     d.before = at(x.from, label(c.a, x));
   }
-  for (const auto& y : c.b.assemblies) {
+  for (std::size_t j = 0; j < c.b.assemblies.size(); ++j) {
+    const auto& y = c.b.assemblies[j];
     c.cover({}, y.from);
-    if (find(c.a, y)) continue;
+    if (m.paired[j]) continue;
     auto& d = c.add(group::io, impact::additive, "assembly-added", "[Assembly] " + label(c.b, y), "added",
                     "a new assembly; nothing configured uses it yet");
     d.after = at(y.from, label(c.b, y));

@@ -174,6 +174,25 @@ TEST(Diff, IdenticalParametersPairByNumberFirst) {
   EXPECT_EQ(moved.r.differences.at(0).message, "renumbered: Param7 is now Param10");
 }
 
+// A repeated number (check's duplicate-entry error, found in fuzzed files):
+// the k-th Input1 or Assem101 of the old file pairs with the k-th of the new
+// one, so a file matches its copy and dropping the second copy is one removal.
+TEST(Diff, RepeatedNumbersPairInOrder) {
+  const auto rs = project_file("eds/rightsight-42ef-3byte.eds");
+  const std::string input2 = "        Input1 = 2, 16, 0x0006, \"Second\", 6, \"20 04 24 02 30 03\", \"\";\n";
+  const auto twice = replaced(rs, "[Variant_IO_Info]", input2 + "\n[Variant_IO_Info]");
+  EXPECT_TRUE(compare(twice, twice).r.differences.empty()) << compare(twice, twice).dump();
+  const auto dropped = compare(twice, rs);
+  EXPECT_EQ(dropped.kinds(), (std::vector<std::string>{"io-data-removed"})) << dropped.dump();
+  EXPECT_EQ(dropped.r.differences.at(0).subject, "[IO_Info] Input1 \"Second\"");
+
+  const std::string assem = "        Assem101 = \"Again\", \"20 04 24 66 30 03\", 1, , , , 8, ;\n";
+  const auto assem_twice = device_eds + assem;  // [Assembly] is the last section
+  EXPECT_TRUE(compare(assem_twice, assem_twice).r.differences.empty()) << compare(assem_twice, assem_twice).dump();
+  const auto assem_dropped = compare(assem_twice, device_eds);
+  EXPECT_EQ(assem_dropped.kinds(), (std::vector<std::string>{"assembly-removed"})) << assem_dropped.dump();
+}
+
 TEST(Diff, AddedAndRemovedParameters) {
   const auto added = replaced(device_eds, "[Assembly]",
                               "        Param4 = 0, , , 0x0000, 0xC8, 4, \"Hours\", \"h\", \"\", 0, 100000, 0, , , , , , , , , 0;\n"
