@@ -295,6 +295,29 @@ TEST(DocContent, CollisionsAreSameIdentityDifferentBytes) {
   EXPECT_TRUE(doc::identity_collisions(e).empty());
 }
 
+TEST(DocContent, IndexSaysWhenAFileNamesNoNetwork) {
+  std::vector<doc::library_entry> e(3);
+  e[0].sum.networks = "DeviceNet";
+  e[0].source = "named.eds";
+  e[1].source = "module.eds";  // names no network
+  e[2].source = "broken.eds";
+  e[2].unreadable = true;  // nothing is known of it: no claim either way
+  e[2].problem = "cannot open";
+  const auto html = doc::render_index(e, doc::page_format::html);
+  const std::string dash =
+      R"(<td class="muted" title="The file names no network, neither in [Device Classification] nor by its sections">—</td>)";
+  std::size_t dashes = 0;
+  for (auto at = html.find(dash); at != std::string::npos; at = html.find(dash, at + 1)) ++dashes;
+  EXPECT_EQ(dashes, 1u);
+  EXPECT_LT(html.find(dash), html.find(">module.eds<"));
+  EXPECT_GT(html.find(dash), html.find(">named.eds<"));
+  EXPECT_NE(html.find("<td>DeviceNet</td>"), std::string::npos);
+  const auto md = doc::render_index(e, doc::page_format::markdown);
+  EXPECT_NE(md.find("| — | module.eds |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| DeviceNet | named.eds |"), std::string::npos) << md;
+  EXPECT_NE(md.find("|  | broken.eds |"), std::string::npos) << md;
+}
+
 TEST(DocContent, FindingsLinkToTheirLines) {
   const auto a = analyse("[Device]\nVendCode = 1;\nMajRev = 0;\n");
   const auto s = doc::build_sheet(*a);
