@@ -2,6 +2,7 @@
 // `edsc doc` output: a datasheet as one self-contained HTML page or as
 // Markdown with its bit maps as SVG files beside it, and a library index.
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "doc/sheet.hpp"
@@ -42,6 +43,11 @@ enum class page_format { html, markdown };
 // Files whose identity (vendor, type, code, revision) is the same but whose
 // bytes differ: groups of indexes into `entries`.
 [[nodiscard]] std::vector<std::vector<std::size_t>> identity_collisions(const std::vector<library_entry>& entries);
+
+// What the proxy connections table holds, in both renderings: plain text.
+inline constexpr std::string_view proxy_hint =
+    "ProxyConnectN and ProxiedConnectN entries of [Connection Manager], in the ConnectionN layout. "
+    "They are kept apart from the device's own connections; values are shown as the file writes them.";
 
 // The page style (render_style.cpp).
 [[nodiscard]] std::string_view page_css();

@@ -220,6 +220,7 @@ std::string render_html(const sheet& s, const source_file& src, const page_optio
   out += R"(<nav class="toc"><a href="#identity">Identity</a>)";
   if (!s.devicenet_io.empty() || !s.io_data.empty() || !s.connections.empty())
     out += R"(<a href="#connections">Connections</a>)";
+  if (!s.proxy_connections.empty()) out += R"(<a href="#proxy-connections">Proxy connections</a>)";
   if (!s.maps.empty()) out += R"(<a href="#io">I/O bit maps</a>)";
   if (!s.params.empty()) out += R"(<a href="#params">Parameters</a>)";
   if (!s.groups.empty()) out += R"(<a href="#groups">Groups</a>)";
@@ -253,6 +254,14 @@ std::string render_html(const sheet& s, const source_file& src, const page_optio
       out += "<h3>EtherNet/IP connections</h3>";
       table_html(out, s.connections);
     }
+    out += "</section>\n";
+  }
+  if (!s.proxy_connections.empty()) {
+    section_open(out, "proxy-connections", "Proxy connections");
+    out += R"(<p class="hint">)";
+    append_escaped(out, proxy_hint);
+    out += "</p>";
+    table_html(out, s.proxy_connections);
     out += "</section>\n";
   }
   if (!s.maps.empty()) maps_html(out, s);

@@ -53,6 +53,13 @@ std::vector<std::pair<std::string, std::vector<std::size_t>>> by_vendor(const st
 }
 
 
+// Most module files (a rack's I/O cards) name no network: an empty cell would
+// read as a fault of the index, so it says so. A file that could not be read
+// says nothing.
+constexpr std::string_view no_network = "—";
+constexpr std::string_view no_network_title =
+    "The file names no network, neither in [Device Classification] nor by its sections";
+
 constexpr std::string_view sort_script =
     "<script>(function(){var t=document.getElementById('library');if(!t)return;"
     "var hs=t.querySelectorAll('th[data-col]');hs.forEach(function(h){h.addEventListener('click',function(){"
@@ -64,10 +71,16 @@ constexpr std::string_view sort_script =
     "var r=(p!==null&&q!==null)?(+p)-(+q):a.textContent.localeCompare(d.textContent);return up?r:-r;});"
     "rs.forEach(function(r){b.appendChild(r);});});});});})();</script>\n";
 
-void cell(std::string& out, std::string_view text, const char* cls = "", const std::string& sort_value = {}) {
+void cell(std::string& out, std::string_view text, const char* cls = "", const std::string& sort_value = {},
+          std::string_view title = {}) {
   out += "<td";
   if (*cls != 0) out += fmt::format(" class=\"{}\"", cls);
   if (!sort_value.empty()) out += fmt::format(" data-v=\"{}\"", sort_value);
+  if (!title.empty()) {
+    out += " title=\"";
+    append_escaped(out, title);
+    out += "\"";
+  }
   out += ">";
   append_escaped(out, text);
   out += "</td>";
@@ -148,7 +161,8 @@ std::string html_index(const std::vector<library_entry>& entries,
            "", std::to_string(s.type_id));
       cell(out, s.identified ? std::to_string(s.product_code) : "", "num", std::to_string(s.product_code));
       cell(out, s.revision, "num", std::to_string(s.major * 1000 + s.minor));
-      cell(out, s.networks);
+      if (!e.unreadable && s.networks.empty()) cell(out, no_network, "muted", {}, no_network_title);
+      else cell(out, s.networks);
       cell(out, e.source, "code");
       cell(out, s.errors > 0 ? std::to_string(s.errors) : "", s.errors > 0 ? "num err" : "num", std::to_string(s.errors));
       cell(out, s.warnings > 0 ? std::to_string(s.warnings) : "", s.warnings > 0 ? "num warn" : "num",
@@ -188,7 +202,8 @@ std::string md_index(const std::vector<library_entry>& entries,
                                                       e.page);
       out += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", product, md_escaped(s.type),
                          s.identified ? std::to_string(s.product_code) : "", md_escaped(s.revision),
-                         md_escaped(s.networks), md_escaped(e.source), s.errors, s.warnings);
+                         md_escaped(!e.unreadable && s.networks.empty() ? no_network : s.networks),
+                         md_escaped(e.source), s.errors, s.warnings);
     }
     out += "\n";
   }

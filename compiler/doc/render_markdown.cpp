@@ -51,6 +51,11 @@ markdown_page render_markdown(const sheet& s, const std::string& svg_stem, const
     table_md(out, s.io_data);
     table_md(out, s.connections);
   }
+  if (!s.proxy_connections.empty()) {
+    heading(out, "Proxy connections");
+    out += fmt::format("{}\n\n", md_escaped(proxy_hint));
+    table_md(out, s.proxy_connections);
+  }
   if (!s.maps.empty()) {
     heading(out, "I/O bit maps");
     out += "Byte offsets down, bits across (bit 7 left); positions read *byte.bit*.\n\n";

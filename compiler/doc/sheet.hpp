@@ -73,6 +73,7 @@ struct sheet {
   table devicenet_io;  // one row per predefined connection type
   table io_data;       // InputN/OutputN
   table connections;   // EtherNet/IP ConnectionN
+  table proxy_connections;  // ProxyConnectN / ProxiedConnectN, apart from the real ones
   std::vector<bit_map> maps;
   table params, groups, ports, capacity;
   std::vector<finding> findings;

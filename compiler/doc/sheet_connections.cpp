@@ -1,7 +1,8 @@
 // Connections on the datasheet: DeviceNet [IO_Info] per predefined connection
-// type and data set, EtherNet/IP ConnectionN with its bit fields in words.
-// Sizes and assembly instances come from the C header's facts, so the page and
-// the header never disagree.
+// type and data set, EtherNet/IP ConnectionN with its bit fields in words, and
+// the ProxyConnectN / ProxiedConnectN entries apart.
+// Sizes and assembly instances of the real connections come from the C
+// header's facts, so the page and the header never disagree.
 #include <fmt/format.h>
 
 #include "doc/sheet_parts.hpp"
@@ -121,18 +122,19 @@ std::string direction_text(const model::direction_params& d) {
   return out;
 }
 
-// One direction of a connection: size, what the format names, RPI, bits.
-std::string flow_text(const reader& r, std::uint32_t size, std::uint32_t instance, const value& format,
-                      const value& rpi, const model::direction_params* bits) {
-  std::string out = bytes_text(size);
-  if (instance != 0) out += fmt::format(", assembly {}", instance);
-  if (const auto* ref = format.as_ref()) out += fmt::format("\n{}", r.ref_text(*ref));
-  if (rpi.present()) out += fmt::format("\nRPI {} µs", r.text(rpi));
-  if (bits != nullptr) {
-    out += "\n";
-    out += direction_text(*bits);
-  }
+// One direction of a connection: `head` (size, assembly), what the format
+// names, RPI, bits.
+std::string flow_text(const reader& r, std::string head, const value& format, const value& rpi,
+                      const model::direction_params* bits) {
+  std::string out = std::move(head);
+  if (const auto* ref = format.as_ref()) join(out, "\n", r.ref_text(*ref));
+  if (rpi.present()) join(out, "\n", fmt::format("RPI {} µs", r.text(rpi)));
+  if (bits != nullptr) join(out, "\n", direction_text(*bits));
   return out;
+}
+
+std::string sized(std::uint32_t size, std::uint32_t instance) {
+  return instance != 0 ? fmt::format("{}, assembly {}", bytes_text(size), instance) : bytes_text(size);
 }
 
 void eip_rows(const reader& r, const std::vector<emit::eip_connection_facts>& facts, sheet& s) {
@@ -149,9 +151,47 @@ void eip_rows(const reader& r, const std::vector<emit::eip_connection_facts>& fa
     t.rows.push_back({{fmt::format("Connection{}", c.number), r.line(c.from), cell_style::code},
                       r.at(c.name),
                       {c.decoded ? trigger_text(c.tt) : r.text(c.trigger), r.line(c.trigger.from)},
-                      {flow_text(r, f->output_size, f->output_instance, c.ot_format, c.ot_rpi, c.decoded ? &c.cp.ot : nullptr),
+                      {flow_text(r, sized(f->output_size, f->output_instance), c.ot_format, c.ot_rpi,
+                                 c.decoded ? &c.cp.ot : nullptr),
                        r.line(c.ot_size.from)},
-                      {flow_text(r, f->input_size, f->input_instance, c.to_format, c.to_rpi, c.decoded ? &c.cp.to : nullptr),
+                      {flow_text(r, sized(f->input_size, f->input_instance), c.to_format, c.to_rpi,
+                                 c.decoded ? &c.cp.to : nullptr),
+                       r.line(c.to_size.from)},
+                      {config},
+                      {r.path_text(c.path), r.line(c.path.from)}});
+  }
+}
+
+// A size field of a proxy entry as written: no header fact stands behind it.
+std::string size_text(const reader& r, const value& v) {
+  if (v.is_integer()) return bytes_text(v.as_uint());
+  if (const auto* ref = v.as_ref()) return r.ref_text(*ref);
+  return r.text(v);
+}
+
+// "proxy: 4 bytes\nParam3 (...)": one configuration pair, empty when not given.
+std::string config_text(const reader& r, const char* which, const value& size, const value& format) {
+  std::string out = size_text(r, size);
+  if (const auto* ref = format.as_ref()) join(out, ", ", r.ref_text(*ref));
+  return out.empty() ? out : fmt::format("{}: {}", which, out);
+}
+
+// ProxyConnectN / ProxiedConnectN: the ConnectionN columns, every value as the
+// file writes it (the C header knows nothing of them, so no sizes are derived).
+void proxy_rows(const reader& r, sheet& s) {
+  auto& t = s.proxy_connections;
+  t.head = {"Entry", "Name", "Trigger and transport", "O→T (to the device)", "T→O (from the device)",
+            "Configuration", "Path"};
+  for (const auto& c : r.dev.proxy_connections) {
+    const char* keyword = c.kind == model::connection_kind::proxy ? "ProxyConnect" : "ProxiedConnect";
+    std::string config = config_text(r, "proxy", c.proxy_config_size, c.proxy_config_format);
+    join(config, "\n", config_text(r, "target", c.target_config_size, c.target_config_format));
+    t.rows.push_back({{fmt::format("{}{}", keyword, c.number), r.line(c.from), cell_style::code},
+                      r.at(c.name),
+                      {c.decoded ? trigger_text(c.tt) : r.text(c.trigger), r.line(c.trigger.from)},
+                      {flow_text(r, size_text(r, c.ot_size), c.ot_format, c.ot_rpi, c.decoded ? &c.cp.ot : nullptr),
+                       r.line(c.ot_size.from)},
+                      {flow_text(r, size_text(r, c.to_size), c.to_format, c.to_rpi, c.decoded ? &c.cp.to : nullptr),
                        r.line(c.to_size.from)},
                       {config},
                       {r.path_text(c.path), r.line(c.path.from)}});
@@ -167,6 +207,7 @@ void build_connections(const reader& r, sheet& s) {
   io_data_rows(r, r.dev.io, "", s);
   io_data_rows(r, r.dev.variant_io, "Variant ", s);
   if (!r.dev.connections.empty()) eip_rows(r, facts.connections, s);
+  proxy_rows(r, s);
 }
 
 }  // namespace edsc::doc::detail

@@ -79,6 +79,35 @@ TEST(DocCli, ASiteHasAPagePerFileAndAnIndexThatNamesCollisions) {
   EXPECT_NE(broken.find("href=\"index.html\""), std::string::npos);
 }
 
+// The Rockwell library: 57 of its 60 files (rack modules whose [Device
+// Classification] holds only tool keywords such as 1_RSNetWorx_1794, and no
+// [IO_Info], TCP/IP or ConnectionN) name no network; 0001000700E70300.eds and
+// 00010073006E0400.eds say Class1 = DeviceNet, 031F000E030000010001.eds EtherNetIP.
+TEST(DocCli, TheIndexMarksEveryFileThatNamesNoNetwork) {
+  temp_dir dir("doc-networks");
+  const auto site = dir.path() / "site";
+  const auto r = run_shell(edsc_command() + " doc " + quoted(rockwell) + " -o " + quoted(site));
+  EXPECT_LE(r.status, 1) << r.output;
+  const auto index = read_text(site / "index.html");
+  const std::string dash =
+      R"(<td class="muted" title="The file names no network, neither in [Device Classification] nor by its sections">—</td>)";
+  std::size_t dashes = 0;
+  for (auto at = index.find(dash); at != std::string::npos; at = index.find(dash, at + 1)) ++dashes;
+  EXPECT_EQ(dashes, 57u);
+  // A file's row, from its <tr> to the file name cell.
+  auto row = [&](const std::string& file) {
+    const auto end = index.find("<td class=\"code\">" + file + "</td>");
+    if (end == std::string::npos) return std::string{};
+    const auto begin = index.rfind("<tr class=\"f\">", end);
+    return index.substr(begin, end - begin);
+  };
+  EXPECT_NE(row("0001000700E70300.eds").find("<td>DeviceNet</td>"), std::string::npos);
+  EXPECT_NE(row("00010073006E0400.eds").find("<td>DeviceNet</td>"), std::string::npos);
+  EXPECT_NE(row("031F000E030000010001.eds").find("<td>EtherNet/IP</td>"), std::string::npos);
+  EXPECT_NE(row("0001000700200100.eds").find(dash), std::string::npos);
+  EXPECT_EQ(row("0001000700E70300.eds").find("—"), std::string::npos);
+}
+
 TEST(DocCli, BadInputAndUnwritableOutputAreExitTwoWithNothingHalfWritten) {
   temp_dir dir("doc-bad");
   auto r = run_shell(edsc_command() + " doc " + quoted(dir.path() / "missing.eds") + " -o " +

@@ -2,6 +2,8 @@
 // that no EDS string ever becomes markup.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include "doc/markup.hpp"
 #include "doc/sheet.hpp"
 #include "doc_support.hpp"
@@ -116,6 +118,107 @@ TEST(DocContent, ConnectionBitsAndPathsAreInWords) {
   EXPECT_NE(c.find("Assembly class, instance 1, connection point 100, connection point 100"), std::string::npos) << c;
 }
 
+// One of each proxy kind beside a real connection. Decoded by hand:
+// 0x04010002 = class 1 (bit 1), cyclic (bit 16), exclusive owner (bit 26),
+// not a server (bit 31 clear); 0x44240305 = O->T fixed (bit 0), heartbeat
+// (bits 8-10 = 3), point-to-point (bit 18), scheduled (bit 26); T->O fixed
+// (bit 2), modeless (bits 12-14 = 0), multicast (bit 21), scheduled (bit 30).
+constexpr const char* proxy_eds = R"([File]
+DescText = "proxy"; CreateDate = 01-01-2020; CreateTime = 00:00:00; Revision = 1.0;
+[Device]
+VendCode = 1; VendName = "V"; ProdType = 12; ProdTypeStr = "T"; ProdCode = 3; MajRev = 1; MinRev = 1; ProdName = "P";
+[Device Classification]
+Class1 = EtherNetIP;
+[Params]
+Param1 = 0, , "", 0x0000, 0xC7, 2, "Config size", "", "", 0, 64, 6, , , , , , , , , ;
+[Assembly]
+Assem100 = "In", "20 04 24 64 30 03", 4, 0, , , 32, ;
+Assem101 = "Out", "20 04 24 65 30 03", 8, 0, , , 64, ;
+[Connection Manager]
+Connection1 = 0x84010002, 0x44640405, 10000, , Assem101, 10000, , Assem100, , , , ,
+    "Own", "", "20 04 24 01 2C 65 2C 64";
+ProxyConnect1 = 0x04010002, 0x44240305, 20000, 8, Assem101, 30000, 4, Assem100, , , Param1, ,
+    "Proxy <owner>", "", "20 04 24 01 2C 65 2C 64";
+ProxiedConnect2 = 0x00000000, 0x00000000, , , , , , , , , , , "", "", "";
+)";
+
+TEST(DocContent, ProxyConnectionsHaveTheirOwnTableAndSayTheirKind) {
+  const auto a = analyse(proxy_eds);
+  EXPECT_TRUE(a->diags.empty());
+  const auto s = doc::build_sheet(*a);
+  ASSERT_EQ(s.connections.rows.size(), 1u);  // the real one only
+  EXPECT_EQ(s.connections.rows[0][0].text, "Connection1");
+  const auto& t = s.proxy_connections;
+  ASSERT_EQ(t.rows.size(), 2u);
+  ASSERT_EQ(t.head.size(), s.connections.head.size());
+  const auto& proxy = t.rows[0];
+  EXPECT_EQ(proxy[0].text, "ProxyConnect1");
+  EXPECT_EQ(proxy[0].line, 15u);
+  EXPECT_EQ(proxy[1].text, "Proxy <owner>");
+  EXPECT_EQ(proxy[2].text, "class 1\ncyclic\nexclusive owner");
+  EXPECT_EQ(proxy[3].text, "8 bytes\nOut (Assem101)\nRPI 20000 µs\npoint-to-point, fixed, scheduled, heartbeat");
+  EXPECT_EQ(proxy[4].text, "4 bytes\nIn (Assem100)\nRPI 30000 µs\nmulticast, fixed, scheduled, modeless");
+  EXPECT_EQ(proxy[5].text, "target: Config size (Param1)");
+  EXPECT_EQ(proxy[6].text, "Assembly class, instance 1, connection point 101, connection point 100");
+  const auto& proxied = t.rows[1];
+  EXPECT_EQ(proxied[0].text, "ProxiedConnect2");
+  EXPECT_EQ(proxied[0].line, 17u);
+  EXPECT_EQ(proxied[2].text, "no transport class");  // 0x00000000
+
+  // After the connections, before the bit maps, in the navigation too; linked to its line; escaped.
+  const auto html = doc::render_html(s, *a->source);
+  const auto connections = html.find(R"(<section id="connections">)");
+  const auto proxies = html.find(R"(<section id="proxy-connections"><h2>Proxy connections</h2>)");
+  const auto maps = html.find(R"(<section id="io">)");
+  ASSERT_NE(proxies, std::string::npos);
+  EXPECT_LT(connections, proxies);
+  EXPECT_LT(proxies, maps);
+  EXPECT_NE(html.find(R"(<a href="#proxy-connections">Proxy connections</a>)"), std::string::npos);
+  EXPECT_NE(html.find(R"(<a href="#L15" title="line 15 of the source">ProxyConnect1</a>)"), std::string::npos);
+  EXPECT_NE(html.find(R"(<a href="#L17" title="line 17 of the source">ProxiedConnect2</a>)"), std::string::npos);
+  EXPECT_NE(html.find("<td>Proxy &lt;owner&gt;</td>"), std::string::npos);
+  EXPECT_EQ(html.find("<owner>"), std::string::npos);
+
+  const auto md = doc::render_markdown(s, "device").text;
+  const auto md_proxies = md.find("## Proxy connections\n");
+  ASSERT_NE(md_proxies, std::string::npos);
+  EXPECT_LT(md.find("## Connections\n"), md_proxies);
+  EXPECT_LT(md_proxies, md.find("## I/O bit maps\n"));
+  EXPECT_NE(md.find("| ProxyConnect1 (line 15) | Proxy &lt;owner&gt; | class 1<br>cyclic<br>exclusive owner |"),
+            std::string::npos);
+  EXPECT_NE(md.find("| ProxiedConnect2 (line 17) |  | no transport class |"), std::string::npos);
+}
+
+TEST(DocContent, NoProxyConnectionsNoProxyPart) {
+  const auto a = analyse(hostile_eds);
+  const auto s = doc::build_sheet(*a);
+  EXPECT_TRUE(s.proxy_connections.empty());
+  EXPECT_EQ(doc::render_html(s, *a->source).find("proxy-connections"), std::string::npos);
+  EXPECT_EQ(doc::render_markdown(s, "device").text.find("Proxy connections"), std::string::npos);
+}
+
+// A FLEX I/O module file: four ProxiedConnectN (lines 228, 239, 250, 261), each
+// "0x00000000, 0x00000000" and every other field empty, and no ConnectionN.
+TEST(DocContent, RockwellFlexModuleListsItsProxiedConnections) {
+  const auto a = analyse_file(rockwell / "0001000700200100.eds");
+  const auto s = doc::build_sheet(*a);
+  EXPECT_TRUE(s.connections.empty());
+  const auto& t = s.proxy_connections;
+  ASSERT_EQ(t.rows.size(), 4u);
+  const std::uint32_t lines[] = {228, 239, 250, 261};
+  for (std::size_t i = 0; i < 4; ++i) {
+    const auto& row = t.rows[i];
+    EXPECT_EQ(row[0].text, fmt::format("ProxiedConnect{}", i + 1));
+    EXPECT_EQ(row[0].line, lines[i]);
+    EXPECT_EQ(row[1].text, "");  // Name ""
+    EXPECT_EQ(row[2].text, "no transport class");
+    EXPECT_EQ(row[3].text, "modeless");  // no size, format or RPI; parameters 0
+    EXPECT_EQ(row[6].text, "");
+  }
+  const auto html = doc::render_html(s, *a->source);
+  EXPECT_NE(html.find(R"(<a href="#L261" title="line 261 of the source">ProxiedConnect4</a>)"), std::string::npos);
+}
+
 TEST(DocContent, NoEdsStringBecomesMarkup) {
   const auto a = analyse(hostile_eds);
   const auto s = doc::build_sheet(*a);
@@ -190,6 +293,29 @@ TEST(DocContent, CollisionsAreSameIdentityDifferentBytes) {
   EXPECT_EQ(c[0], (std::vector<std::size_t>{0, 1, 2}));
   e[1].sum.sha256 = "aa";  // identical copies are not a collision
   EXPECT_TRUE(doc::identity_collisions(e).empty());
+}
+
+TEST(DocContent, IndexSaysWhenAFileNamesNoNetwork) {
+  std::vector<doc::library_entry> e(3);
+  e[0].sum.networks = "DeviceNet";
+  e[0].source = "named.eds";
+  e[1].source = "module.eds";  // names no network
+  e[2].source = "broken.eds";
+  e[2].unreadable = true;  // nothing is known of it: no claim either way
+  e[2].problem = "cannot open";
+  const auto html = doc::render_index(e, doc::page_format::html);
+  const std::string dash =
+      R"(<td class="muted" title="The file names no network, neither in [Device Classification] nor by its sections">—</td>)";
+  std::size_t dashes = 0;
+  for (auto at = html.find(dash); at != std::string::npos; at = html.find(dash, at + 1)) ++dashes;
+  EXPECT_EQ(dashes, 1u);
+  EXPECT_LT(html.find(dash), html.find(">module.eds<"));
+  EXPECT_GT(html.find(dash), html.find(">named.eds<"));
+  EXPECT_NE(html.find("<td>DeviceNet</td>"), std::string::npos);
+  const auto md = doc::render_index(e, doc::page_format::markdown);
+  EXPECT_NE(md.find("| — | module.eds |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| DeviceNet | named.eds |"), std::string::npos) << md;
+  EXPECT_NE(md.find("|  | broken.eds |"), std::string::npos) << md;
 }
 
 TEST(DocContent, FindingsLinkToTheirLines) {
