@@ -171,7 +171,10 @@ void build_identity(const reader& r, sheet& s) {
   row("Revision", {s.sum.revision, r.line(id.maj_rev.from)});
   row("Product name", r.at(id.prod_name));
   row("Catalog", r.at(id.catalog));
-  auto nets = s.sum.networks.empty() ? std::string("none detected") : s.sum.networks;
+  // The same words as the library index's tooltip for such a file.
+  auto nets = s.sum.networks.empty()
+                  ? std::string("none named, neither in [Device Classification] nor by its sections")
+                  : s.sum.networks;
   if (!r.dev.classes.from_classification && !s.sum.networks.empty()) nets += " (from the sections present)";
   if (r.dev.classes.safety) nets += ", CIP Safety";
   row("Networks", {nets, r.section_line(r.dev.classes.section)});

@@ -217,6 +217,9 @@ TEST(DocContent, RockwellFlexModuleListsItsProxiedConnections) {
   }
   const auto html = doc::render_html(s, *a->source);
   EXPECT_NE(html.find(R"(<a href="#L261" title="line 261 of the source">ProxiedConnect4</a>)"), std::string::npos);
+  // Like most module files it names no network; the identity card says so
+  // in the index's words.
+  EXPECT_NE(html.find("none named, neither in [Device Classification] nor by its sections"), std::string::npos);
 }
 
 TEST(DocContent, NoEdsStringBecomesMarkup) {
