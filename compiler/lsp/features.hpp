@@ -45,6 +45,39 @@ struct symbol {
 };
 [[nodiscard]] std::vector<symbol> document_symbols(const analysis& a);
 
+// textDocument/documentHighlight: every site naming the entry at `offset`
+// (the references answer, declaration included); `write` marks the
+// defining keyword.
+struct highlight {
+  span range;
+  bool write = false;
+};
+[[nodiscard]] std::vector<highlight> highlights(const analysis& a, std::uint32_t offset);
+
+// workspace/symbol for one document: the symbols of document_symbols,
+// sections and their entries flattened in file order, whose name or detail
+// contains `query` (ASCII case-insensitive; empty matches all), at most
+// `limit` of them. `container` is the detail when there is one (a
+// parameter's name string), else the section's name.
+struct found_symbol {
+  std::string name;
+  std::string container;
+  int kind = 0;
+  span range;
+};
+[[nodiscard]] std::vector<found_symbol> find_symbols(const analysis& a, std::string_view query, std::size_t limit);
+
+// textDocument/foldingRange: each section from its header to its last
+// non-blank byte, each entry written over several lines, and each run of
+// three or more lines holding only a comment. Spans in bytes, each over
+// at least one line break (the server folds the lines they start and end
+// on). Sorted by start, outer ranges first.
+struct fold {
+  span range;
+  bool comment = false;
+};
+[[nodiscard]] std::vector<fold> folding_ranges(const analysis& a);
+
 // textDocument/completion at `offset`. `kind` is an LSP CompletionItemKind.
 struct completion_item {
   std::string label;

@@ -1,5 +1,7 @@
-// Go to definition, find references and the document outline.
+// Go to definition, find references, highlights and the symbols of the outline.
 #include <fmt/format.h>
+
+#include <algorithm>
 
 #include "lsp/features.hpp"
 #include "emit/json_values.hpp"
@@ -23,6 +25,15 @@ std::vector<span> references(const analysis& a, std::uint32_t offset, bool inclu
   std::vector<span> out;
   for (const auto* r : idx.of(s->kind, s->number, s->variant_io))
     if (include_declaration || !r->declaration) out.push_back(r->name);
+  return out;
+}
+
+std::vector<highlight> highlights(const analysis& a, std::uint32_t offset) {
+  const ref_index idx(a);
+  const auto* s = idx.at(offset);
+  if (!s) return {};
+  std::vector<highlight> out;
+  for (const auto* r : idx.of(s->kind, s->number, s->variant_io)) out.push_back({r->name, r->declaration});
   return out;
 }
 
@@ -77,6 +88,36 @@ std::vector<symbol> document_symbols(const analysis& a) {
       sec.children.push_back(std::move(child));
     }
     out.push_back(std::move(sec));
+  }
+  return out;
+}
+
+namespace {
+
+char ascii_lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; }
+
+// `needle` is lower case already.
+bool contains_folded(std::string_view hay, std::string_view needle) {
+  return std::search(hay.begin(), hay.end(), needle.begin(), needle.end(),
+                     [](char h, char n) { return ascii_lower(h) == n; }) != hay.end();
+}
+
+}  // namespace
+
+std::vector<found_symbol> find_symbols(const analysis& a, std::string_view query, std::size_t limit) {
+  std::string needle(query);
+  std::transform(needle.begin(), needle.end(), needle.begin(), ascii_lower);
+  const auto matches = [&](const symbol& s) {
+    return contains_folded(s.name, needle) || contains_folded(s.detail, needle);
+  };
+  std::vector<found_symbol> out;
+  for (const auto& sec : document_symbols(a)) {
+    if (out.size() >= limit) break;
+    if (matches(sec)) out.push_back({sec.name, sec.detail, sec.kind, sec.range});
+    for (const auto& c : sec.children) {
+      if (out.size() >= limit) break;
+      if (matches(c)) out.push_back({c.name, c.detail.empty() ? sec.name : c.detail, c.kind, c.range});
+    }
   }
   return out;
 }

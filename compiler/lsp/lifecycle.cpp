@@ -16,6 +16,9 @@ json capabilities() {
       {"definitionProvider", true},
       {"referencesProvider", true},
       {"documentSymbolProvider", true},
+      {"documentHighlightProvider", true},
+      {"foldingRangeProvider", true},
+      {"workspaceSymbolProvider", true},
       {"completionProvider", json{{"triggerCharacters", json::array({"[", "=", ","})}}},
       {"renameProvider", json{{"prepareProvider", true}}},
   };

@@ -1,5 +1,6 @@
-// hover, definition, references and documentSymbol: the answers of
-// features.hpp (byte spans) as protocol JSON (UTF-16 ranges).
+// hover, definition, references, documentHighlight, documentSymbol,
+// workspace/symbol and foldingRange: the answers of features.hpp (byte
+// spans) as protocol JSON (UTF-16 ranges).
 #include "lsp/convert.hpp"
 #include "lsp/features.hpp"
 #include "lsp/handlers.hpp"
@@ -60,6 +61,48 @@ json on_document_symbol(session& s, const json& params) {
   auto& d = s.analysed(params);
   json out = json::array();
   for (const auto& sym : document_symbols(*d.analysed)) out.push_back(symbol_json(d, sym));
+  return out;
+}
+
+json on_document_highlight(session& s, const json& params) {
+  auto& d = s.analysed(params);
+  const auto found = highlights(*d.analysed, offset_from(d, params));
+  if (found.empty()) return nullptr;
+  // DocumentHighlightKind: 2 Read, 3 Write.
+  json out = json::array();
+  for (const auto& h : found)
+    out.push_back(json{{"range", to_json(d.lines->to_range(h.range))}, {"kind", h.write ? 3 : 2}});
+  return out;
+}
+
+json on_folding_range(session& s, const json& params) {
+  auto& d = s.analysed(params);
+  json out = json::array();
+  for (const auto& f : folding_ranges(*d.analysed)) {
+    const auto r = d.lines->to_range(f.range);
+    if (r.end.line <= r.start.line) continue;
+    out.push_back(
+        json{{"startLine", r.start.line}, {"endLine", r.end.line}, {"kind", f.comment ? "comment" : "region"}});
+  }
+  return out;
+}
+
+json on_workspace_symbol(session& s, const json& params) {
+  // Clients ask on every keystroke of the query: the answer stays small.
+  constexpr std::size_t limit = 1000;
+  const auto query = params.value("query", std::string());
+  json out = json::array();
+  for (auto& [uri, d] : s.docs.all()) {
+    if (out.size() >= limit) break;
+    s.analyse(d);
+    for (const auto& f : find_symbols(*d.analysed, query, limit - out.size())) {
+      json j{{"name", f.name.empty() ? std::string("?") : f.name},
+             {"kind", f.kind > 0 ? f.kind : 13},
+             {"location", location(d, f.range)}};
+      if (!f.container.empty()) j["containerName"] = f.container;
+      out.push_back(std::move(j));
+    }
+  }
   return out;
 }
 

@@ -136,6 +136,7 @@ inline std::vector<std::string> lsp_document_session(std::string_view text) {
     request("textDocument/references", {{"textDocument", doc}, {"position", pos}, {"context", {{"includeDeclaration", true}}}});
     request("textDocument/completion", tp);
     request("textDocument/prepareRename", tp);
+    request("textDocument/documentHighlight", tp);
     // Renames within the family of the word under the cursor (Param7 ->
     // Param1, likely taken, and Param1007, likely free), and across families.
     const std::size_t line = pos["line"], column = pos["character"];
@@ -157,6 +158,9 @@ inline std::vector<std::string> lsp_document_session(std::string_view text) {
   for (std::size_t k = 0; k < probes; ++k)
     for (const bool first_word : {true, false}) everything_at(at(k, first_word));
   request("textDocument/documentSymbol", {{"textDocument", doc}});
+  request("textDocument/foldingRange", {{"textDocument", doc}});
+  // A query cut from the middle of the text, so the fuzzer steers it too.
+  request("workspace/symbol", {{"query", std::string(text.substr(text.size() / 2, 4))}});
   request("textDocument/formatting", {{"textDocument", doc}, {"options", {{"tabSize", 4}, {"insertSpaces", true}}}});
   request("textDocument/codeAction", {{"textDocument", doc},
                                       {"range", {{"start", {{"line", 0}, {"character", 0}}}, {"end", {{"line", lines}, {"character", 0}}}}},

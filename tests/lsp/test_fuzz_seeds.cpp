@@ -50,7 +50,8 @@ TEST(LspFuzzSeeds, DocumentSessionAsksForEveryFeature) {
   for (const char* method : {"initialize", "textDocument/didOpen", "textDocument/hover", "textDocument/definition",
                              "textDocument/references", "textDocument/completion", "textDocument/prepareRename",
                              "textDocument/rename", "textDocument/codeAction", "textDocument/documentSymbol",
-                             "textDocument/formatting", "textDocument/didChange", "shutdown", "exit"})
+                             "textDocument/formatting", "textDocument/didChange", "textDocument/documentHighlight",
+                             "textDocument/foldingRange", "workspace/symbol", "shutdown", "exit"})
     EXPECT_NE(all.find(std::string("\"method\":\"") + method + "\""), std::string::npos) << method;
 }
 
