@@ -8,6 +8,7 @@
 #include "lsp/describe.hpp"
 #include "lsp/locate.hpp"
 #include "lsp/ref_index.hpp"
+#include "schema/text.hpp"
 
 namespace edsc::lsp {
 
@@ -18,22 +19,20 @@ std::vector<span> definition(const analysis& a, std::uint32_t offset) {
   return {};
 }
 
-std::vector<span> references(const analysis& a, std::uint32_t offset, bool include_declaration) {
-  const ref_index idx(a);
-  const auto* s = idx.at(offset);
-  if (!s) return {};
-  std::vector<span> out;
-  for (const auto* r : idx.of(s->kind, s->number, s->variant_io))
-    if (include_declaration || !r->declaration) out.push_back(r->name);
-  return out;
-}
-
 std::vector<highlight> highlights(const analysis& a, std::uint32_t offset) {
   const ref_index idx(a);
   const auto* s = idx.at(offset);
   if (!s) return {};
   std::vector<highlight> out;
   for (const auto* r : idx.of(s->kind, s->number, s->variant_io)) out.push_back({r->name, r->declaration});
+  return out;
+}
+
+// The highlights' sites, the declaration left out unless asked for.
+std::vector<span> references(const analysis& a, std::uint32_t offset, bool include_declaration) {
+  std::vector<span> out;
+  for (const auto& h : highlights(a, offset))
+    if (include_declaration || !h.write) out.push_back(h.range);
   return out;
 }
 
@@ -94,19 +93,17 @@ std::vector<symbol> document_symbols(const analysis& a) {
 
 namespace {
 
-char ascii_lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; }
-
 // `needle` is lower case already.
 bool contains_folded(std::string_view hay, std::string_view needle) {
   return std::search(hay.begin(), hay.end(), needle.begin(), needle.end(),
-                     [](char h, char n) { return ascii_lower(h) == n; }) != hay.end();
+                     [](char h, char n) { return schema::ascii_lower(h) == n; }) != hay.end();
 }
 
 }  // namespace
 
 std::vector<found_symbol> find_symbols(const analysis& a, std::string_view query, std::size_t limit) {
   std::string needle(query);
-  std::transform(needle.begin(), needle.end(), needle.begin(), ascii_lower);
+  std::transform(needle.begin(), needle.end(), needle.begin(), schema::ascii_lower);
   const auto matches = [&](const symbol& s) {
     return contains_folded(s.name, needle) || contains_folded(s.detail, needle);
   };
