@@ -137,10 +137,29 @@ std::string sized(std::uint32_t size, std::uint32_t instance) {
   return instance != 0 ? fmt::format("{}, assembly {}", bytes_text(size), instance) : bytes_text(size);
 }
 
+// The columns of a ConnectionN-layout table; `first` names the entry column.
+std::vector<std::string> connection_head(const char* first) {
+  return {first, "Name", "Trigger and transport", "O→T (to the device)", "T→O (from the device)", "Configuration",
+          "Path"};
+}
+
+// One row of a ConnectionN-layout entry: `entry` is its keyword and number,
+// `ot` and `to` the head of each direction (size, assembly), `config` the
+// configuration cell.
+std::vector<cell> connection_row(const reader& r, const model::connection& c, std::string entry, std::string ot,
+                                 std::string to, std::string config) {
+  return {{std::move(entry), r.line(c.from), cell_style::code},
+          r.at(c.name),
+          {c.decoded ? trigger_text(c.tt) : r.text(c.trigger), r.line(c.trigger.from)},
+          {flow_text(r, std::move(ot), c.ot_format, c.ot_rpi, c.decoded ? &c.cp.ot : nullptr), r.line(c.ot_size.from)},
+          {flow_text(r, std::move(to), c.to_format, c.to_rpi, c.decoded ? &c.cp.to : nullptr), r.line(c.to_size.from)},
+          {std::move(config)},
+          {r.path_text(c.path), r.line(c.path.from)}};
+}
+
 void eip_rows(const reader& r, const std::vector<emit::eip_connection_facts>& facts, sheet& s) {
   auto& t = s.connections;
-  t.head = {"Connection", "Name", "Trigger and transport", "O→T (to the device)", "T→O (from the device)",
-            "Configuration", "Path"};
+  t.head = connection_head("Connection");
   for (const auto& c : r.dev.connections) {
     const emit::eip_connection_facts* f = nullptr;
     for (const auto& x : facts)
@@ -148,17 +167,8 @@ void eip_rows(const reader& r, const std::vector<emit::eip_connection_facts>& fa
     if (f == nullptr) continue;  // a repeated number: the header's first one wins, and so does the page
     std::string config = f->config_size != 0 || f->config_instance != 0 ? bytes_text(f->config_size) : "";
     if (f->config_instance != 0) config += fmt::format(", assembly {}", f->config_instance);
-    t.rows.push_back({{fmt::format("Connection{}", c.number), r.line(c.from), cell_style::code},
-                      r.at(c.name),
-                      {c.decoded ? trigger_text(c.tt) : r.text(c.trigger), r.line(c.trigger.from)},
-                      {flow_text(r, sized(f->output_size, f->output_instance), c.ot_format, c.ot_rpi,
-                                 c.decoded ? &c.cp.ot : nullptr),
-                       r.line(c.ot_size.from)},
-                      {flow_text(r, sized(f->input_size, f->input_instance), c.to_format, c.to_rpi,
-                                 c.decoded ? &c.cp.to : nullptr),
-                       r.line(c.to_size.from)},
-                      {config},
-                      {r.path_text(c.path), r.line(c.path.from)}});
+    t.rows.push_back(connection_row(r, c, fmt::format("Connection{}", c.number), sized(f->output_size, f->output_instance),
+                                    sized(f->input_size, f->input_instance), std::move(config)));
   }
 }
 
@@ -180,21 +190,13 @@ std::string config_text(const reader& r, const char* which, const value& size, c
 // file writes it (the C header knows nothing of them, so no sizes are derived).
 void proxy_rows(const reader& r, sheet& s) {
   auto& t = s.proxy_connections;
-  t.head = {"Entry", "Name", "Trigger and transport", "O→T (to the device)", "T→O (from the device)",
-            "Configuration", "Path"};
+  t.head = connection_head("Entry");
   for (const auto& c : r.dev.proxy_connections) {
     const char* keyword = c.kind == model::connection_kind::proxy ? "ProxyConnect" : "ProxiedConnect";
     std::string config = config_text(r, "proxy", c.proxy_config_size, c.proxy_config_format);
     join(config, "\n", config_text(r, "target", c.target_config_size, c.target_config_format));
-    t.rows.push_back({{fmt::format("{}{}", keyword, c.number), r.line(c.from), cell_style::code},
-                      r.at(c.name),
-                      {c.decoded ? trigger_text(c.tt) : r.text(c.trigger), r.line(c.trigger.from)},
-                      {flow_text(r, size_text(r, c.ot_size), c.ot_format, c.ot_rpi, c.decoded ? &c.cp.ot : nullptr),
-                       r.line(c.ot_size.from)},
-                      {flow_text(r, size_text(r, c.to_size), c.to_format, c.to_rpi, c.decoded ? &c.cp.to : nullptr),
-                       r.line(c.to_size.from)},
-                      {config},
-                      {r.path_text(c.path), r.line(c.path.from)}});
+    t.rows.push_back(connection_row(r, c, fmt::format("{}{}", keyword, c.number), size_text(r, c.ot_size),
+                                    size_text(r, c.to_size), std::move(config)));
   }
 }
 
