@@ -30,6 +30,7 @@
 #include "network/plan.hpp"
 #include "network/render_map.hpp"
 #include "parse/parser.hpp"
+#include "source/line_starts.hpp"
 #include "source/source_file.hpp"
 
 namespace edsc::fuzz {
@@ -110,9 +111,8 @@ inline std::vector<std::string> lsp_document_session(std::string_view text) {
   notify("initialized", json::object());
   notify("textDocument/didOpen",
          {{"textDocument", {{"uri", "file:///fuzz.eds"}, {"languageId", "eds"}, {"version", 1}, {"text", text}}}});
-  std::vector<std::size_t> starts{0};
-  for (std::size_t i = 0; i < text.size(); ++i)
-    if (text[i] == '\n') starts.push_back(i + 1);
+  // Lines as the server counts them (LF, CRLF and a lone CR).
+  const auto starts = line_starts(text);
   const std::size_t lines = starts.size();
   const std::size_t probes = std::min<std::size_t>(lines, 12);
   // Per probe two cursors: on the line's first word (a keyword or section
