@@ -20,6 +20,7 @@ h1{margin:6px 0 2px;font-size:28px;line-height:1.2}
 .chip.err{background:#fde7e7;color:var(--err);border-color:#f5b5b0}.chip.warn{background:#fff4d6;color:var(--warn);border-color:#eed18b}
 .chip.ok{background:#e3f6e8;color:var(--ok);border-color:#a6dcb4}.chip.net{background:#fff;color:#0b3d6e;font-weight:600}
 nav.toc{position:sticky;top:0;z-index:2;background:#fff;border-bottom:1px solid var(--line);padding:8px 32px;display:flex;flex-wrap:wrap;gap:4px 18px;font-size:13.5px}
+[id]{scroll-margin-top:56px}
 main{padding:8px 32px 32px;max-width:1400px}
 section{margin-top:26px}
 h2{font-size:19px;margin:0 0 10px;padding-bottom:4px;border-bottom:2px solid var(--soft)}

@@ -125,6 +125,41 @@ TEST_F(DocBrowser, LargestCorpusFile) {
   EXPECT_NE(v.dom.find("OutputAssembly"), std::string::npos);
 }
 
+// A link to a section or a source line scrolls its target into view below
+// the sticky navigation bar, not under it. The probe script (appended to a
+// copy of the page) jumps to each target and records the gap in pixels
+// between the bar's bottom and the target's top.
+TEST_F(DocBrowser, JumpsLandBelowTheNavigationBar) {
+  const auto page = dir_.path() / "flex.html";
+  const auto r = run_shell(test::edsc_command() + " doc " + quoted(rockwell / "0001000700200100.eds") + " -o " +
+                           quoted(page));
+  ASSERT_LE(r.status, 1) << r.output;
+  auto html = read_text(page);
+  const auto body_end = html.rfind("</body>");
+  ASSERT_NE(body_end, std::string::npos);
+  html.insert(body_end,
+              "<script>var n=document.querySelector('nav.toc'),g=[];"
+              "['identity','proxy-connections','params','L228'].forEach(function(id){"
+              "var t=document.getElementById(id);if(!t){g.push(id+':missing');return;}t.scrollIntoView();"
+              "g.push(id+':'+Math.round(t.getBoundingClientRect().top-n.getBoundingClientRect().bottom));});"
+              "document.body.setAttribute('data-gaps',g.join(' '));</script>");
+  test::write_text(page, html);
+  const auto v = load(browser_, page);
+  ASSERT_TRUE(v.ran);
+  const auto at = v.dom.find("data-gaps=\"");
+  ASSERT_NE(at, std::string::npos);
+  std::istringstream gaps(v.dom.substr(at + 11, v.dom.find('"', at + 11) - at - 11));
+  int n = 0;
+  for (std::string g; gaps >> g; ++n) {
+    const auto colon = g.find(':');
+    ASSERT_NE(colon, std::string::npos) << g;
+    const auto value = g.substr(colon + 1);
+    ASSERT_NE(value, "missing") << g;
+    EXPECT_GE(std::stoi(value), 0) << g << " (negative: the target is under the bar)";
+  }
+  EXPECT_EQ(n, 4);
+}
+
 TEST_F(DocBrowser, LibraryIndex) {
   const auto site = dir_.path() / "site";
   const auto r = run_shell(test::edsc_command() + " doc " + quoted(rockwell) + " -o " + quoted(site));
