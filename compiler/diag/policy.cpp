@@ -28,12 +28,15 @@ diag_policy::diag_policy() : rules_(all_rules().size()) {
 }
 
 std::optional<std::string> diag_policy::add_flag(std::string_view flag) {
-  if (flag == "error") {
-    werror_ = true;
-    return std::nullopt;
-  }
-  if (flag == "no-error") {
-    werror_ = false;
+  // The global forms set every rule they speak of, so that a later -Werror
+  // overrides an earlier -Wno-error=ID and the other way round.
+  if (flag == "error" || flag == "no-error") {
+    const bool on = flag == "error";
+    for (const auto& r : all_rules()) {
+      auto& st = rules_[static_cast<std::size_t>(r.id)];
+      if (!on) st.promote = to_error::no;
+      else if (r.default_level == severity::warning) st.promote = to_error::yes;
+    }
     return std::nullopt;
   }
   bool enable = true;
@@ -58,6 +61,7 @@ std::optional<std::string> diag_policy::add_flag(std::string_view flag) {
     auto& st = rules_[static_cast<std::size_t>(id)];
     if (promote != to_error::unset) {
       st.promote = promote;
+      if (promote == to_error::yes) st.enabled = true;  // as -Werror=ID does in compilers
     } else if (!enable && protected_group(info.group)) {
       return fmt::format("-W{}: {} errors cannot be disabled", flag, info.group);
     } else {
@@ -71,11 +75,7 @@ bool diag_policy::enabled(diag_id id) const { return rules_[static_cast<std::siz
 
 severity diag_policy::level_of(diag_id id) const {
   const auto& st = rules_[static_cast<std::size_t>(id)];
-  const auto level = rule_of(id).default_level;
-  if (level != severity::warning) return level;
-  if (st.promote == to_error::yes) return severity::error;
-  if (st.promote == to_error::no) return severity::warning;
-  return werror_ ? severity::error : severity::warning;
+  return st.promote == to_error::yes ? severity::error : rule_of(id).default_level;
 }
 
 void diag_policy::apply(diagnostics& ds) const {

@@ -9,12 +9,15 @@
 namespace edsc {
 
 // What the user's -W flags make of the catalogue's default severities,
-// following the compiler conventions: later flags win.
+// following the compiler conventions. Flags apply in order, so where two
+// flags speak of the same rule the later one wins.
 //   -W<id|group>             enable (rules of group `pedantic` start disabled)
 //   -Wno-<id|group>          disable (syntax and input errors cannot be disabled)
-//   -Werror                  every warning becomes an error
-//   -Werror=<id|group>       that warning becomes an error
-//   -Wno-error=<id|group>    that warning stays a warning under -Werror
+//   -Werror                  every warning becomes an error (notes stay notes)
+//   -Wno-error               no warning or note becomes an error
+//   -Werror=<id|group>       enable it and make it an error, a note as well as
+//                            a warning (a CI run can fail on a note it cares about)
+//   -Wno-error=<id|group>    it keeps its own severity
 class diag_policy {
  public:
   diag_policy();
@@ -36,7 +39,6 @@ class diag_policy {
     to_error promote = to_error::unset;
   };
   std::vector<rule_state> rules_;
-  bool werror_ = false;
 };
 
 }  // namespace edsc

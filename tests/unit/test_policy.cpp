@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 #include "diag/policy.hpp"
 
 namespace {
@@ -9,7 +12,7 @@ using edsc::severity;
 
 edsc::diagnostics one_of_each() {
   return {edsc::make_diagnostic(diag_id::syntax_missing_comma, {0, 0}, "m"),
-          edsc::make_diagnostic(diag_id::input_binary, {1, 2}, "n")};
+          edsc::make_diagnostic(diag_id::input_nul_byte, {1, 2}, "n")};
 }
 
 TEST(policy, defaults_keep_catalogue_severities) {
@@ -57,6 +60,70 @@ TEST(policy, pedantic_rules_start_disabled_and_can_be_enabled) {
   EXPECT_TRUE(p.enabled(diag_id::missing_classification_devicenet));
   EXPECT_FALSE(p.add_flag("no-missing-classification-devicenet").has_value());
   EXPECT_FALSE(p.enabled(diag_id::missing_classification_devicenet));
+}
+
+// Every ordered pair of flags that speak of the same rule: the later one
+// wins. The expectations are worked out from docs/cli.md by hand, not read
+// back from the code. W is a warning rule and N a note rule, both of group
+// io-info; "off" means the rule is disabled.
+TEST(policy, later_flags_win_for_every_order) {
+  struct row {
+    std::vector<const char*> flags;
+    diag_id rule;
+    const char* expect;  // "error", "warning", "note" or "off"
+  };
+  const auto W = diag_id::io_info_cos_cyclic;
+  const auto N = diag_id::io_info_unreferenced;
+  const std::vector<row> rows = {
+      {{"error", "no-error=io-info-cos-cyclic"}, W, "warning"},
+      {{"no-error=io-info-cos-cyclic", "error"}, W, "error"},
+      {{"error=io-info-cos-cyclic", "no-error"}, W, "warning"},
+      {{"no-error", "error=io-info-cos-cyclic"}, W, "error"},
+      {{"error=io-info", "no-error=io-info-cos-cyclic"}, W, "warning"},
+      {{"no-error=io-info-cos-cyclic", "error=io-info"}, W, "error"},
+      {{"error", "no-error=io-info"}, W, "warning"},
+      {{"no-error=io-info", "error"}, W, "error"},
+      {{"error=io-info-cos-cyclic", "no-error=io-info-cos-cyclic"}, W, "warning"},
+      {{"no-error=io-info-cos-cyclic", "error=io-info-cos-cyclic"}, W, "error"},
+      {{"error", "no-error"}, W, "warning"},
+      {{"no-error", "error"}, W, "error"},
+      {{"no-io-info-cos-cyclic", "io-info-cos-cyclic"}, W, "warning"},
+      {{"io-info-cos-cyclic", "no-io-info-cos-cyclic"}, W, "off"},
+      {{"no-io-info-cos-cyclic", "error=io-info-cos-cyclic"}, W, "error"},
+      {{"error=io-info-cos-cyclic", "no-io-info-cos-cyclic"}, W, "off"},
+      {{"no-io-info", "io-info-cos-cyclic"}, W, "warning"},
+      {{"io-info-cos-cyclic", "no-io-info"}, W, "off"},
+      // Notes: -Werror leaves them alone, -Werror=ID promotes them.
+      {{"error"}, N, "note"},
+      {{"error=io-info-unreferenced"}, N, "error"},
+      {{"error=io-info"}, N, "error"},
+      {{"error=io-info-unreferenced", "no-error"}, N, "note"},
+      {{"no-error", "error=io-info-unreferenced"}, N, "error"},
+      {{"error=io-info-unreferenced", "no-error=io-info-unreferenced"}, N, "note"},
+      {{"error", "error=io-info-unreferenced", "no-error=io-info"}, N, "note"},
+      // -Werror=ID enables a rule that starts disabled, as compilers do.
+      {{"error=missing-classification-devicenet"}, diag_id::missing_classification_devicenet, "error"},
+      {{"error=pedantic", "no-pedantic"}, diag_id::missing_classification_devicenet, "off"},
+  };
+  for (const auto& r : rows) {
+    edsc::diag_policy p;
+    std::string said;
+    for (const auto* f : r.flags) {
+      said += std::string(" -W") + f;
+      ASSERT_FALSE(p.add_flag(f).has_value()) << said;
+    }
+    const std::string got = p.enabled(r.rule) ? std::string(edsc::to_string(p.level_of(r.rule))) : "off";
+    EXPECT_EQ(got, r.expect) << said;
+  }
+}
+
+TEST(policy, werror_on_a_note_promotes_the_diagnostic_itself) {
+  edsc::diag_policy p;
+  ASSERT_FALSE(p.add_flag("error=io-info-unreferenced").has_value());
+  edsc::diagnostics ds{edsc::make_diagnostic(diag_id::io_info_unreferenced, {0, 1}, "m")};
+  p.apply(ds);
+  ASSERT_EQ(ds.size(), 1u);
+  EXPECT_EQ(ds[0].level, severity::error);
 }
 
 TEST(policy, werror_promotes_warnings_but_not_notes_and_later_flags_win) {
