@@ -16,10 +16,15 @@ std::unique_ptr<analysis> analyze(std::unique_ptr<source_file> source, const che
   a->tree = std::move(parsed.tree);
   a->syntax = parsed.diags;
   a->diags = std::move(parsed.diags);
-  a->dev = lower(a->tree, a->diags);
   a->dev.tree = &a->tree;
-  const std::uint8_t networks = options.networks != 0 ? options.networks : a->dev.classes.networks;
-  run_checks(check_context{a->tree, a->dev, networks, a->diags});
+  // Not EDS text: the input diagnostic is the whole verdict. Lowering an empty
+  // tree would add "missing [File]" and the like, all consequences of it.
+  if (!parsed.not_text) {
+    a->dev = lower(a->tree, a->diags);
+    a->dev.tree = &a->tree;
+    const std::uint8_t networks = options.networks != 0 ? options.networks : a->dev.classes.networks;
+    run_checks(check_context{a->tree, a->dev, networks, a->diags});
+  }
   std::stable_sort(a->diags.begin(), a->diags.end(),
                    [](const diagnostic& x, const diagnostic& y) { return x.where.begin < y.where.begin; });
   options.policy.apply(a->diags);

@@ -1,4 +1,5 @@
 #include "parse/parser.hpp"
+#include "parse/not_text.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -75,6 +76,14 @@ parse_result parse(const source_file& src) {
   parse_result result;
   cst::builder b(src, result.diags);
   const auto text = src.text();
+  // Input that is not EDS text gets one diagnostic and no parse: its bytes as
+  // syntax errors would only bury the one thing the user must hear.
+  if (auto d = not_text(text)) {
+    result.diags.push_back(std::move(*d));
+    result.tree = b.finish({0, src.size()});
+    result.not_text = true;
+    return result;
+  }
   std::uint32_t stopped_at = src.size();
   try {
     pg::memory_input<pg::tracking_mode::lazy> in(text.data(), text.size(), src.path());
@@ -88,11 +97,6 @@ parse_result parse(const source_file& src) {
   }
   // The grammar matches every input to its end; only the error limit stops it.
   result.tree = b.finish({stopped_at, src.size()});
-  if (const void* nul = std::memchr(text.data(), '\0', text.size())) {
-    const auto at = static_cast<std::uint32_t>(static_cast<const char*>(nul) - text.data());
-    result.diags.push_back(make_diagnostic(diag_id::input_binary, {at, at + 1},
-                                           "NUL byte in input: this is not a text file"));
-  }
   std::stable_sort(result.diags.begin(), result.diags.end(),
                    [](const diagnostic& a, const diagnostic& b) { return a.where.begin < b.where.begin; });
   return result;

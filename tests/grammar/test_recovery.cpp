@@ -97,11 +97,42 @@ TEST(Recovery, StopsAfterTheErrorLimitAndStillCoversEveryByte) {
   EXPECT_EQ(p.tree().tokens.back().kind, cst::token_kind::skipped);
 }
 
-TEST(Recovery, NulByteIsReportedWhereItIs) {
+// Input that is not EDS text is said once, at its cause, and not parsed:
+// its bytes read as EDS would only add errors that follow from it.
+TEST(Recovery, NulByteIsReportedWhereItIsAndStopsTheParse) {
   using namespace std::string_literals;
   const auto p = parse_text("[S]\nA = \"a\0b\";\n"s);
   ASSERT_EQ(p.diag_list(), strings{"input-nul-byte@2:7"});
-  EXPECT_EQ(p.fields("A"), strings{"\"a\0b\""s});
+  EXPECT_TRUE(p.keywords().empty());
+  EXPECT_TRUE(p.result.not_text);
+}
+
+TEST(Recovery, WideEncodingsAndBinaryFormatsAreOneDiagnostic) {
+  using namespace std::string_literals;
+  // "[File]\n" in UTF-16LE with its byte-order mark, and the same without one.
+  const std::string u16le = "\xFF\xFE[\0F\0i\0l\0e\0]\0\n\0"s;
+  const std::string u16be = "\xFE\xFF\0[\0F\0i\0l\0e\0]\0\n"s;
+  const std::string bare16 = "[\0F\0i\0l\0e\0]\0\n\0D\0e\0s\0c\0T\0e\0x\0t\0"s;
+  const std::string u32le = "\xFF\xFE\0\0[\0\0\0"s;
+  const std::string u32be = "\0\0\xFE\xFF\0\0\0["s;
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {u16le, "input-utf16@1:1"}, {u16be, "input-utf16@1:1"}, {bare16, "input-utf16@1:1"},
+      {u32le, "input-utf32@1:1"}, {u32be, "input-utf32@1:1"},
+      {"\x7F" "ELF\x02\x01\x01\0\0\0"s, "input-binary@1:1"}, {"PK\x03\x04\x14\0\0\0"s, "input-binary@1:1"},
+      {"\x1F\x8B\x08\0"s, "input-binary@1:1"}, {"%PDF-1.7\n"s, "input-binary@1:1"},
+  };
+  for (const auto& [bytes, want] : cases) {
+    const auto p = parse_text(bytes);
+    EXPECT_EQ(p.diag_list(), strings{want}) << want;
+    EXPECT_TRUE(p.keywords().empty()) << want;
+  }
+  // The messages say what the file is and how to convert it.
+  EXPECT_NE(parse_text(u16le).diags().front().message.find("UTF-16LE"), std::string::npos);
+  EXPECT_NE(parse_text(u16le).diags().front().message.find("iconv -f UTF-16 -t UTF-8"), std::string::npos);
+  EXPECT_NE(parse_text(bare16).diags().front().message.find("without a byte-order mark"), std::string::npos);
+  // UTF-8 with non-ASCII letters and a file that merely starts "MZ" are text.
+  EXPECT_FALSE(parse_text("$ caf\xC3\xA9\n[File]\n").result.not_text);
+  EXPECT_FALSE(parse_text("MZ = 1;\n").result.not_text);
 }
 
 TEST(Recovery, AnAllDigitWordIsStrayNotAKeyword) {

@@ -111,6 +111,39 @@ TEST_F(Hostile, NulBytes) {
   expect_survives(p, "NUL byte");
 }
 
+// A text saved as UTF-16 (as some Windows editors do): one diagnostic that
+// names the encoding and the conversion, not an error per stray byte.
+TEST_F(Hostile, Utf16FileIsOneClearDiagnostic) {
+  std::string wide = "\xFF\xFE";
+  for (const char c : good_eds) {
+    wide += c;
+    wide += '\0';
+  }
+  const auto p = file("wide.eds", wide);
+  const auto r = run_edsc({"check", p.string()}, time_limit);
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find("wide.eds:1:1: error: this file is UTF-16LE"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("iconv -f UTF-16 -t UTF-8"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("[input-utf16]"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("1 file checked: 1 error, 0 warnings, 0 notes"), std::string::npos) << r.output;
+  // The commands that report no diagnostics of their own stop on it too.
+  for (const std::vector<std::string>& args : {std::vector<std::string>{"dump", p.string()},
+                                                {"header", p.string(), "-o", (dir_ / "out.h").string()}}) {
+    const auto d = run_edsc(args, time_limit);
+    EXPECT_EQ(d.status, 1) << args[0] << "\n" << d.output;
+    EXPECT_NE(d.output.find("[input-utf16]"), std::string::npos) << d.output;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "out.h"));
+}
+
+TEST_F(Hostile, ZipArchiveIsNamed) {
+  const auto p = file("library.eds", std::string("PK\x03\x04\x14\0\0\0\x08\0", 10) + std::string(200, 'z'));
+  const auto r = run_edsc({"check", p.string()}, time_limit);
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find("this is a ZIP archive"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("1 file checked: 1 error,"), std::string::npos) << r.output;
+}
+
 TEST_F(Hostile, InvalidUtf8) {
   std::string text = good_eds;
   const auto at = text.find("Test Device");
