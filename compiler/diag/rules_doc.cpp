@@ -27,15 +27,18 @@ std::string render_rules_markdown() {
     out += fmt::format("| [`{}`](#{}) | {} | {} | {} |\n", r.name, r.name, to_string(r.default_level), r.group,
                        r.summary);
   }
-  for (const auto& r : all_rules()) {
-    out += fmt::format("\n## {}\n\n", r.name);
-    out += fmt::format("Default severity: {}. Group: `{}`.\n\n", to_string(r.default_level), r.group);
-    if (const auto basis = basis_of(r.id); !basis.empty()) out += fmt::format("Basis: {}.\n\n", basis);
-    out += fmt::format("{}\n\n", r.explanation);
-    fenced(out, "Triggers it", r.bad);
-    fenced(out, "Does not", r.good);
-    out.pop_back();
-  }
+  for (const auto& r : all_rules()) out += "\n" + render_rule_markdown(r);
+  return out;
+}
+
+std::string render_rule_markdown(const rule_info& r) {
+  std::string out = fmt::format("## {}\n\n", r.name);
+  out += fmt::format("Default severity: {}. Group: `{}`.\n\n", to_string(r.default_level), r.group);
+  if (const auto basis = basis_of(r.id); !basis.empty()) out += fmt::format("Basis: {}.\n\n", basis);
+  out += fmt::format("{}\n\n", r.explanation);
+  fenced(out, "Triggers it", r.bad);
+  fenced(out, "Does not", r.good);
+  out.pop_back();
   return out;
 }
 

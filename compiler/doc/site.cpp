@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 
 #include "doc/markup.hpp"
-#include "io/write_file.hpp"
+#include "io/output_target.hpp"
 
 namespace edsc::doc {
 
@@ -22,9 +22,9 @@ const char* extension(page_format f) { return f == page_format::html ? ".html" :
 
 // The page and what goes beside it, each written atomically.
 void write_page(const rendered_page& p, const fs::path& target, std::vector<std::string>& failures) {
-  if (auto err = io::write_atomically(target.string(), p.text)) failures.push_back(err->message);
+  if (auto err = io::write_output(target.string(), p.text)) failures.push_back(err->message);
   for (const auto& [name, content] : p.files)
-    if (auto err = io::write_atomically((target.parent_path() / name).string(), content)) failures.push_back(err->message);
+    if (auto err = io::write_output((target.parent_path() / name).string(), content)) failures.push_back(err->message);
 }
 
 }  // namespace
@@ -122,7 +122,7 @@ site_result build_site(const std::vector<std::string>& files, const std::string&
   }
   for (auto& f : failures) result.failures.insert(result.failures.end(), f.begin(), f.end());
   const auto index = (fs::path(out_dir) / (format == page_format::html ? "index.html" : "index.md")).string();
-  if (auto err = io::write_atomically(index, render_index(result.entries, format))) result.failures.push_back(err->message);
+  if (auto err = io::write_output(index, render_index(result.entries, format))) result.failures.push_back(err->message);
   return result;
 }
 

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "check/check_file.hpp"
+#include "diag/plural.hpp"
 #include "diag/render_text.hpp"
 #include "driver/choice.hpp"
 #include "driver/commands.hpp"
@@ -84,9 +85,9 @@ class ordered_checker {
 };
 
 std::string summary_line(const report_totals& t, std::size_t hidden) {
-  auto plural = [](std::size_t n, const char* word) { return fmt::format("{} {}{}", n, word, n == 1 ? "" : "s"); };
-  std::string line = fmt::format("{} checked: {}, {}", plural(t.files, "file"), plural(t.errors, "error"),
-                                 plural(t.warnings, "warning"));
+  // Notes are counted as the JSON summary counts them.
+  std::string line = fmt::format("{} checked: {}, {}, {}", plural(t.files, "file"), plural(t.errors, "error"),
+                                 plural(t.warnings, "warning"), plural(t.notes, "note"));
   if (hidden > 0) line += fmt::format(" ({} not shown: --max-errors)", hidden);
   return line + "\n";
 }

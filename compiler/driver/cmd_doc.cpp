@@ -6,11 +6,13 @@
 
 #include <fmt/format.h>
 
+#include "diag/plural.hpp"
 #include "doc/site.hpp"
 #include "driver/choice.hpp"
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
 #include "io/collect_inputs.hpp"
+#include "io/output_target.hpp"
 #include "io/write_file.hpp"
 
 namespace edsc::driver {
@@ -35,35 +37,25 @@ int status_of(const std::vector<doc::library_entry>& entries, bool failed) {
 }
 
 int run_one(const doc_cli& cli) {
-  const bool to_stdout = cli.output == "-";
+  const bool to_stdout = io::is_stdout(cli.output);
   if (to_stdout && cli.format == doc::page_format::markdown) {
     print_error("--format=md writes SVG files beside the page: give -o a file name");
     return exit_failure;
   }
+  if (refuse_input_as_output(cli.output, {cli.input}) != exit_ok) return exit_failure;
   const auto stem = fs::path(cli.output).stem().string();
   auto page = doc::render_file(cli.input, cli.format, stem, {});
   if (page.entry.unreadable) {
     print_error(page.entry.problem);
     return exit_failure;
   }
-  if (to_stdout) {
-    if (!write_all(stdout, page.text)) return exit_failure;
-    std::fflush(stdout);
-  } else {
-    bool failed = false;
-    const auto dir = fs::path(cli.output).parent_path();
-    for (const auto& [name, content] : page.files) {
-      if (auto err = io::write_atomically((dir / name).string(), content)) {
-        print_error(err->message);
-        failed = true;
-      }
-    }
-    if (auto err = io::write_atomically(cli.output, page.text)) {
-      print_error(err->message);
-      failed = true;
-    }
-    if (failed) return exit_failure;
+  bool failed = false;
+  const auto dir = fs::path(cli.output).parent_path();
+  for (const auto& [name, content] : page.files) {
+    const auto side = (dir / name).string();
+    failed = failed || refuse_input_as_output(side, {cli.input}) != exit_ok || write_result(side, content) != exit_ok;
   }
+  if (failed || write_result(cli.output, page.text) != exit_ok) return exit_failure;
   return status_of({page.entry}, false);
 }
 
@@ -82,17 +74,28 @@ int run_site(const doc_cli& cli) {
     warnings += e.sum.warnings;
   }
   const auto collisions = doc::identity_collisions(site.entries);
-  write_all(stderr, fmt::format("{} page{} written to {} ({} errors, {} warnings{})\n", site.entries.size(),
-                                site.entries.size() == 1 ? "" : "s", cli.output, errors, warnings,
-                                collisions.empty() ? "" : fmt::format(", {} identity collisions", collisions.size())));
+  write_all(stderr, fmt::format("{} written to {} ({}, {}{})\n", plural(site.entries.size(), "page"), cli.output,
+                                plural(errors, "error"), plural(warnings, "warning"),
+                                collisions.empty() ? "" : ", " + plural(collisions.size(), "identity collision")));
   return status_of(site.entries, !site.failures.empty() || !inputs.errors.empty());
 }
 
 int run_doc(const doc_cli& cli) {
   std::error_code ec;
   if (fs::is_directory(cli.input, ec)) {
-    if (cli.output == "-") {
+    if (io::is_stdout(cli.output)) {
       print_error("a folder gives a site of pages: give -o a folder");
+      return exit_failure;
+    }
+    // Pages beside the EDS files would mix the site into the library (and
+    // its index.html over a file of the same name).
+    if (io::same_file(cli.input, cli.output)) {
+      print_error(fmt::format("{}: the site cannot go into the folder it documents; name another folder "
+                              "(a new one inside it is fine)", cli.output));
+      return exit_failure;
+    }
+    if (fs::exists(cli.output, ec) && !fs::is_directory(cli.output, ec)) {
+      print_error(fmt::format("{}: is not a folder; a folder of EDS files gives a site of pages", cli.output));
       return exit_failure;
     }
     return run_site(cli);

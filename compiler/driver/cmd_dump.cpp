@@ -24,6 +24,7 @@ int run_dump(const dump_options& opt) {
   if (!input_file) return exit_failure;
   const auto& src = *input_file;
   const auto parsed = parse(src);
+  if (report_not_text(parsed, src)) return exit_findings;
   diagnostics diags;
   const auto dev = lower(parsed.tree, diags);
   std::string out = emit::to_json(dev, src).dump(opt.indent < 0 ? -1 : opt.indent);

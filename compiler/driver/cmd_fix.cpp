@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "check/check_file.hpp"
+#include "diag/plural.hpp"
 #include "diag/render_text.hpp"
 #include "driver/commands.hpp"
 #include "driver/destination.hpp"
@@ -43,10 +44,9 @@ int run_fix(const fix_options& opt) {
   if (!opt.quiet) {
     for (const auto& d : result.remaining) render_text(*result.final_source, d, style, report);
   }
-  report += fmt::format("{}: {} fix{} applied, {} finding{} left without a fix-it ({} error{})\n", src.path(),
-                        result.applied.size(), result.applied.size() == 1 ? "" : "es", result.remaining.size(),
-                        result.remaining.size() == 1 ? "" : "s", count_at_least(result.remaining, severity::error),
-                        count_at_least(result.remaining, severity::error) == 1 ? "" : "s");
+  report += fmt::format("{}: {} fix{} applied, {} left without a fix-it ({})\n", src.path(), result.applied.size(),
+                        result.applied.size() == 1 ? "" : "es", plural(result.remaining.size(), "finding"),
+                        plural(count_at_least(result.remaining, severity::error), "error"));
   if (!result.converged) report += "edsc: warning: fix-its kept appearing; stopped after several passes\n";
   write_all(stderr, report);
   if (const int rc = opt.dest.write(result.text); rc != exit_ok) return rc;

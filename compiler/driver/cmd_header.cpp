@@ -8,7 +8,7 @@
 #include "driver/output.hpp"
 #include "emit/header_view.hpp"
 #include "io/read_file.hpp"
-#include "io/write_file.hpp"
+#include "io/output_target.hpp"
 #include "lower/lower.hpp"
 #include "parse/parser.hpp"
 
@@ -50,16 +50,18 @@ int run_header(const header_cli& cli) {
     }
   }
   if (!stdin_filename_used(io::is_stdin(cli.input), cli.stdin_name)) return exit_failure;
+  if (refuse_input_as_output(cli.output, {cli.input}) != exit_ok) return exit_failure;
   const auto input_file = read_or_report(cli.input, cli.stdin_name);
   if (!input_file) return exit_failure;
   const auto& src = *input_file;
-  const bool to_stdout = cli.output == "-";
+  const bool to_stdout = io::is_stdout(cli.output);
   // The include guard follows the header's name; on standard output it is
   // the input's (for `-`, the --stdin-filename, else "stdin.h").
   const std::string input_name = io::is_stdin(cli.input) && cli.stdin_name.empty() ? "stdin" : src.path();
   opt.output_name = to_stdout ? std::filesystem::path(input_name).stem().string() + ".h"
                               : std::filesystem::path(cli.output).filename().string();
   const auto parsed = parse(src);
+  if (report_not_text(parsed, src)) return exit_findings;
   diagnostics diags;
   const auto dev = lower(parsed.tree, diags);
   const auto result = emit::generate_header(dev, src, opt);
@@ -73,16 +75,7 @@ int run_header(const header_cli& cli) {
     print_error(fmt::format("no header written for {}", src.path()));
     return exit_findings;
   }
-  if (to_stdout) {
-    if (!write_all(stdout, result.text)) return exit_failure;
-    std::fflush(stdout);
-    return exit_ok;
-  }
-  if (auto err = io::write_atomically(cli.output, result.text)) {
-    print_error(err->message);
-    return exit_failure;
-  }
-  return exit_ok;
+  return write_result(cli.output, result.text);
 }
 
 }  // namespace

@@ -6,12 +6,13 @@
 
 #include <fmt/format.h>
 
+#include "diag/plural.hpp"
 #include "diag/render_text.hpp"
 #include "driver/choice.hpp"
 #include "driver/commands.hpp"
 #include "driver/net_report.hpp"
 #include "driver/output.hpp"
-#include "io/write_file.hpp"
+#include "io/read_file.hpp"
 #include "network/layout.hpp"
 #include "network/plan.hpp"
 #include "network/render_map.hpp"
@@ -45,10 +46,17 @@ int run_net_check(const net_cli& cli) {
 int run_net_map(const net_cli& cli) {
   check_options options;
   if (!apply_flags(cli.warning_flags, options)) return exit_failure;
+  if (refuse_input_as_output(cli.output, {cli.input}) != exit_ok) return exit_failure;
   auto src = read_or_report(cli.input);
   if (!src) return exit_failure;
   const auto name = src->path();
-  auto checked = network::check_network(std::move(src), options);
+  // The nodes' EDS files are inputs too: a map must never land on one.
+  std::vector<std::string> inputs{cli.input};
+  auto checked = network::check_network(std::move(src), options, [&inputs](const std::string& path) {
+    inputs.push_back(path);
+    return io::read_source(path);
+  });
+  if (refuse_input_as_output(cli.output, inputs) != exit_ok) return exit_failure;
   if (checked.has_errors() || !checked.result) {
     // The findings go to stderr so a redirected map is never half a picture.
     const auto totals = checked.totals;
@@ -58,9 +66,8 @@ int run_net_map(const net_cli& cli) {
     for (const auto& r : reports)
       for (const auto& d : r.diags)
         if (d.level == severity::error) render_text(*r.source, d, style, out);
-    out += fmt::format("edsc: no map written: {} has {} error{}\n", cli.input, totals.errors,
-                       totals.errors == 1 ? "" : "s");
     write_all(stderr, out);
+    print_error(fmt::format("no map written: {} has {}", cli.input, plural(totals.errors, "error")));
     return exit_findings;
   }
   const auto& p = *checked.result;
@@ -75,16 +82,7 @@ int run_net_map(const net_cli& cli) {
     case map_format::c: text = network::render_map_c(m); break;
     case map_format::modbus: text = network::render_map_modbus(m); break;
   }
-  if (cli.output == "-") {
-    if (!write_all(stdout, text)) return exit_failure;
-    std::fflush(stdout);
-    return exit_ok;
-  }
-  if (auto err = io::write_atomically(cli.output, text)) {
-    print_error(err->message);
-    return exit_failure;
-  }
-  return exit_ok;
+  return write_result(cli.output, text);
 }
 
 }  // namespace
@@ -107,7 +105,7 @@ void register_net(CLI::App& app, command_action& run) {
               {"csv", map_format::csv}, {"c", map_format::c}, {"modbus", map_format::modbus}},
              "text (the default), json, svg, csv (RSLogix 5000 alias tags), c (scanlist header), "
              "modbus (register map)");
-  map->add_option("-o,--output", map_cli->output, "Write the map here (atomically) instead of standard output");
+  map->add_option("-o,--output", map_cli->output, "Write the map here ('-': standard output, the default)");
   add_color_option(map, map_cli->color);
   map->add_option("-W", map_cli->warning_flags, "Diagnostic flags as for check")->allow_extra_args(false);
   map->callback([&run, map_cli] { run = [map_cli] { return run_net_map(*map_cli); }; });

@@ -11,7 +11,6 @@
 #include "edit/analyze.hpp"
 #include "edit/locate.hpp"
 #include "edit/new_device.hpp"
-#include "io/write_file.hpp"
 
 namespace edsc::driver {
 
@@ -26,6 +25,14 @@ struct new_options {
 };
 
 int run_new(new_options opt) {
+  // `--output 4` meant four output bytes before --output-bytes existed; a
+  // file named by digits alone is far more likely that old spelling.
+  if (!opt.output.empty() && opt.output.find_first_not_of("0123456789") == std::string::npos) {
+    print_error(fmt::format("-o/--output {} names the file to write; for {} output bytes use --output-bytes {}",
+                            opt.output, opt.output, opt.output));
+    return exit_failure;
+  }
+  if (!opt.from.empty() && refuse_input_as_output(opt.output, {opt.from}) != exit_ok) return exit_failure;
   try {
     if (!opt.from.empty()) {
       std::ifstream in(opt.from, std::ios::binary);
@@ -51,12 +58,7 @@ int run_new(new_options opt) {
       print_error("the new file would have the errors above; nothing written (--force writes anyway)");
       return exit_findings;
     }
-    if (opt.output.empty()) return write_all(stdout, text) && std::fflush(stdout) == 0 ? exit_ok : exit_failure;
-    if (auto err = io::write_atomically(opt.output, text)) {
-      print_error(err->message);
-      return exit_failure;
-    }
-    return exit_ok;
+    return write_result(opt.output.empty() ? std::string("-") : opt.output, text);
   } catch (const edit::edit_error& e) {
     print_error(e.what());
     return exit_failure;
@@ -81,8 +83,11 @@ void register_new(CLI::App& app, command_action& run) {
   cmd->add_option("--description", s.description, "[File] DescText");
   cmd->add_option("--revision", s.revision, "Device revision major.minor (default 1.1)");
   add_choice(cmd, "--network", s.network, {"devicenet", "ethernetip"}, "The device's network (default: devicenet)");
-  cmd->add_option("--input", s.input, "Input bytes (produced by the device)");
-  cmd->add_option("--output", s.output, "Output bytes (consumed by the device)");
+  cmd->add_option("--input-bytes", s.input, "Input bytes (produced by the device)");
+  cmd->add_option("--output-bytes", s.output, "Output bytes (consumed by the device)");
+  // The spelling before --input-bytes, kept for scripts (hidden). The old
+  // --output N became -o's long form, which every other command uses.
+  cmd->add_option("--input", s.input)->group("");
   cmd->add_option("--connections", s.connections, "DeviceNet connections, first is the default: poll,strobe,cos,cyclic")
       ->delimiter(',');
   cmd->add_option("--input-name", s.input_name, "Name of the input data");
@@ -92,7 +97,8 @@ void register_new(CLI::App& app, command_action& run) {
   cmd->add_option("--date", s.date, "Creation date mm-dd-yyyy (default: today), for reproducible builds");
   cmd->add_option("--time", s.time, "Creation time hh:mm:ss (default: 00:00:00 with --date, else now)");
   add_choice(cmd, "--eol", opt->eol, {"lf", "crlf"}, "Line endings (default: lf)");
-  cmd->add_option("-o,--output-file", opt->output, "Write the file here (default: standard output)");
+  cmd->add_option("-o,--output", opt->output, "Write the file here ('-': standard output, the default)");
+  cmd->add_option("--output-file", opt->output)->group("");  // -o's old long form (hidden)
   cmd->add_flag("--force", opt->force, "Write even when the result has errors");
   cmd->callback([&run, opt, vendor, type, code, name, from] {
     if (from->count() == 0) {

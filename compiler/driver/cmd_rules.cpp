@@ -5,6 +5,7 @@
 #include "diag/rules_doc.hpp"
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
+#include "driver/suggest.hpp"
 
 namespace edsc::driver {
 
@@ -16,16 +17,20 @@ struct rules_cli {
 };
 
 int run_rules(const rules_cli& cli) {
-  if (cli.markdown) return write_all(stdout, render_rules_markdown()) ? exit_ok : exit_failure;
   if (!cli.id.empty()) {
     const auto id = find_rule(cli.id);
     if (!id) {
-      print_error(fmt::format("no diagnostic named '{}' (run `edsc rules` for the list)", cli.id));
+      auto msg = fmt::format("no diagnostic named '{}'", cli.id);
+      std::vector<std::string> names;
+      for (const auto& r : all_rules()) names.emplace_back(r.name);
+      if (const auto near = nearest(cli.id, names)) msg += fmt::format("; did you mean '{}'?", *near);
+      print_error(msg + " (run `edsc rules` for the list)");
       return exit_failure;
     }
-    write_all(stdout, render_rule_text(rule_of(*id)));
-    return exit_ok;
+    const auto& r = rule_of(*id);
+    return write_all(stdout, cli.markdown ? render_rule_markdown(r) : render_rule_text(r)) ? exit_ok : exit_failure;
   }
+  if (cli.markdown) return write_all(stdout, render_rules_markdown()) ? exit_ok : exit_failure;
   std::string out;
   for (const auto& r : all_rules()) {
     out += fmt::format("{:<36} {:<8} {:<10} {}\n", r.name, to_string(r.default_level), r.group, r.summary);
@@ -40,7 +45,7 @@ void register_rules(CLI::App& app, command_action& run) {
   auto cli = std::make_shared<rules_cli>();
   auto* cmd = app.add_subcommand("rules", "List the diagnostics edsc can report, or explain one");
   cmd->add_option("id", cli->id, "Explain this diagnostic");
-  cmd->add_flag("--markdown", cli->markdown, "Print the whole catalogue as Markdown (docs/rules.md)");
+  cmd->add_flag("--markdown", cli->markdown, "Print as Markdown: the whole catalogue (docs/rules.md), or the one rule named");
   cmd->callback([&run, cli] { run = [cli] { return run_rules(*cli); }; });
 }
 

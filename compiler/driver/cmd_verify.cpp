@@ -6,8 +6,10 @@
 #include <optional>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "check/check_file.hpp"
+#include "diag/plural.hpp"
 #include "diag/render_text.hpp"
 #include "driver/commands.hpp"
 #include "driver/net_report.hpp"
@@ -95,8 +97,27 @@ int run_verify_network(const verify_cli& cli) {
   return totals.errors > 0 ? exit_findings : exit_ok;
 }
 
+// --decode compares nothing, so an option that only matters to a comparison
+// would be silently ignored: say so instead.
+std::vector<std::string> ignored_by_decode(const verify_cli& cli) {
+  std::vector<std::string> out;
+  if (!cli.eds.empty()) out.push_back("an EDS file");
+  if (!cli.capture.empty()) out.push_back("--capture");
+  if (cli.mac >= 0) out.push_back("--mac");
+  if (!cli.network.empty()) out.push_back("--network");
+  if (!cli.warning_flags.empty()) out.push_back("-W");
+  if (cli.format != report_format::text) out.push_back("--format");
+  return out;
+}
+
 int run_verify(const verify_cli& cli) {
-  if (!cli.decode.empty()) return run_decode(cli);
+  if (!cli.decode.empty()) {
+    if (const auto extra = ignored_by_decode(cli); !extra.empty()) {
+      print_error(fmt::format("--decode prints a capture's conversation alone; it takes no {}", fmt::join(extra, ", ")));
+      return exit_failure;
+    }
+    return run_decode(cli);
+  }
   if (!cli.network.empty()) {
     if (cli.capture.empty()) {
       print_error("verify --network needs --capture LOG");
@@ -138,9 +159,8 @@ int run_verify(const verify_cli& cli) {
       std::string out;
       const text_style style{use_color(cli.color, stdout)};
       for (const auto& d : report.diags) render_text(*report.source, d, style, out);
-      out += fmt::format("{} against {}: {} error{}, {} warning{}, {} note{}\n", cli.capture, cli.eds, totals.errors,
-                         totals.errors == 1 ? "" : "s", totals.warnings, totals.warnings == 1 ? "" : "s",
-                         totals.notes, totals.notes == 1 ? "" : "s");
+      out += fmt::format("{} against {}: {}, {}, {}\n", cli.capture, cli.eds, plural(totals.errors, "error"),
+                         plural(totals.warnings, "warning"), plural(totals.notes, "note"));
       write_all(stdout, out);
       break;
     }

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "diag/plural.hpp"
 #include "diag/render_text.hpp"
 
 namespace edsc::driver {
@@ -25,7 +26,6 @@ void print_reports(const std::vector<file_report>& reports, const report_totals&
       for (const auto& r : reports)
         for (const auto& d : r.diags) render_text(*r.source, d, style, out);
       out += text_tail;
-      auto plural = [](std::size_t n, const char* w) { return fmt::format("{} {}{}", n, w, n == 1 ? "" : "s"); };
       out += fmt::format("{}: {}, {}, {}\n", what, plural(totals.errors, "error"), plural(totals.warnings, "warning"),
                          plural(totals.notes, "note"));
       write_all(stdout, out);

@@ -6,7 +6,10 @@
 
 #include <unistd.h>
 
+#include "diag/render_text.hpp"
 #include "driver/choice.hpp"
+#include "driver/commands.hpp"
+#include "io/output_target.hpp"
 #include "io/read_file.hpp"
 
 namespace edsc::driver {
@@ -56,6 +59,35 @@ bool stdin_filename_used(bool reads_stdin, const std::string& name) {
   if (reads_stdin || name.empty()) return true;
   print_error(fmt::format("--stdin-filename {} names standard input, but no input is '-'", name));
   return false;
+}
+
+int refuse_input_as_output(const std::string& output, const std::vector<std::string>& inputs,
+                           std::string_view in_place) {
+  io::input_set set;
+  for (const auto& in : inputs) set.add(in);
+  if (auto err = set.refuse_as_output(output, in_place)) {
+    print_error(err->message);
+    return exit_failure;
+  }
+  return exit_ok;
+}
+
+int write_result(const std::string& output, std::string_view bytes) {
+  // Buffered standard output first, so it cannot land after the direct write.
+  std::fflush(stdout);
+  if (auto err = io::write_output(output, bytes)) {
+    print_error(err->message);
+    return exit_failure;
+  }
+  return exit_ok;
+}
+
+bool report_not_text(const parse_result& parsed, const source_file& src) {
+  if (!parsed.not_text) return false;
+  std::string out;
+  for (const auto& d : parsed.diags) render_text(src, d, text_style{use_color(color_mode::auto_detect, stderr)}, out);
+  write_all(stderr, out);
+  return true;
 }
 
 std::unique_ptr<source_file> read_or_report(const std::string& path, const std::string& stdin_name) {

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "parse/parser.hpp"
 #include "source/source_file.hpp"
 
 namespace edsc::driver {
@@ -34,6 +35,21 @@ void add_stdin_filename(CLI::App* cmd, std::string& name);
 // A --stdin-filename without `-` among the inputs is a usage error: prints
 // why and returns false.
 [[nodiscard]] bool stdin_filename_used(bool reads_stdin, const std::string& name);
+
+// Input that is not EDS text (UTF-16, binary): prints the parser's one
+// diagnostic and returns true, so commands that report no diagnostics of
+// their own (dump, header) stop instead of working on an empty model.
+[[nodiscard]] bool report_not_text(const parse_result& parsed, const source_file& src);
+
+// The output policy's two halves for the driver (io/output_target.hpp):
+// exit_failure after saying why when `output` names one of `inputs` (by
+// device and inode), else exit_ok; `in_place` names the option that rewrites
+// the input, empty where the command has none.
+[[nodiscard]] int refuse_input_as_output(const std::string& output, const std::vector<std::string>& inputs,
+                                         std::string_view in_place = {});
+// Writes `bytes` to `output` (`-`: standard output) and returns the exit
+// status, after saying why on failure.
+[[nodiscard]] int write_result(const std::string& output, std::string_view bytes);
 
 // Reads an input file, or standard input for `-` (named `stdin_name`, else
 // `<stdin>`); on failure prints why and returns null.

@@ -30,7 +30,8 @@ device_spec spec_from_json(const std::string& json_text) {
   }
   if (!j.is_object()) throw edit_error("device JSON must be an object");
   static const char* keys[] = {"vendor", "vendor_name", "product_type", "product_type_name", "product_code",
-                               "name", "catalog", "description", "revision", "network", "input", "output",
+                               "name", "catalog", "description", "revision", "network", "input_bytes", "output_bytes",
+                               "input", "output",
                                "connections", "input_name", "output_name", "input_help", "output_help",
                                "date", "time"};
   for (const auto& [k, v] : j.items()) {
@@ -51,8 +52,15 @@ device_spec spec_from_json(const std::string& json_text) {
   take(j, "description", s.description);
   take(j, "revision", s.revision);
   take(j, "network", s.network);
+  // "input"/"output" are the keys from before --input-bytes; both spellings
+  // at once would leave one of them silently unused.
+  for (const auto* k : {"input", "output"})
+    if (j.contains(k) && j.contains(std::string(k) + "_bytes"))
+      throw edit_error(fmt::format("device JSON: '{}' and '{}_bytes' say the same; keep '{}_bytes'", k, k, k));
   take(j, "input", s.input);
   take(j, "output", s.output);
+  take(j, "input_bytes", s.input);
+  take(j, "output_bytes", s.output);
   take(j, "connections", s.connections);
   take(j, "input_name", s.input_name);
   take(j, "output_name", s.output_name);

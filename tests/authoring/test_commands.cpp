@@ -167,7 +167,7 @@ TEST_F(Authoring, NewFromJsonMatchesTheFlags) {
   auto r = edsc({"new", "--from", json.string(), "-o", a.string()});
   ASSERT_EQ(r.status, 0) << r.output;
   r = edsc({"new", "--vendor", "65535", "--product-type", "100", "--product-code", "9", "--name", "Gadget",
-            "--network", "ethernetip", "--input", "4", "--output", "2", "--date", "01-02-2024", "-o", b.string()});
+            "--network", "ethernetip", "--input-bytes", "4", "--output-bytes", "2", "--date", "01-02-2024", "-o", b.string()});
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_EQ(read_bytes(a), read_bytes(b));
   r = edsc({"check", a.string()});
@@ -187,7 +187,7 @@ TEST_F(Authoring, NewDeviceNetVariantsCheckClean) {
     SCOPED_TRACE(conns);
     const auto out = dir_ / "n.eds";
     auto r = edsc({"new", "--vendor", "65535", "--product-type", "7", "--product-code", "5", "--name", "N",
-                   "--input", "2", "--output", "1", "--connections", conns, "--date", "01-02-2024", "-o",
+                   "--input-bytes", "2", "--output-bytes", "1", "--connections", conns, "--date", "01-02-2024", "-o",
                    out.string()});
     ASSERT_EQ(r.status, 0) << r.output;
     r = edsc({"check", out.string()});

@@ -137,6 +137,22 @@ inline void write_bytes(const fs::path& p, const std::string& bytes) {
   out << bytes;
 }
 
+// The command names a --help text lists under "Subcommands:", in order.
+inline std::vector<std::string> subcommands_in_help(const std::string& help) {
+  std::vector<std::string> out;
+  const auto at = help.find("Subcommands:\n");
+  if (at == std::string::npos) return out;
+  std::istringstream lines(help.substr(at + 13));
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("  ", 0) != 0) break;
+    std::istringstream words(line);
+    std::string name;
+    words >> name;
+    out.push_back(name);
+  }
+  return out;
+}
+
 inline std::string corpus(const char* name) { return (fs::path(EDSC_CORPUS_DIR) / name).string(); }
 
 // A fresh scratch directory under /tmp per test, removed afterwards.

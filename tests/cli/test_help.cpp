@@ -9,21 +9,7 @@ using namespace edsc::cli_test;
 
 // The subcommands `edsc --help` lists, so a new one is covered without
 // editing this test.
-std::vector<std::string> subcommands() {
-  const auto r = run_edsc({"--help"});
-  std::vector<std::string> out;
-  const auto at = r.output.find("Subcommands:\n");
-  if (at == std::string::npos) return out;
-  std::istringstream lines(r.output.substr(at + 13));
-  for (std::string line; std::getline(lines, line);) {
-    if (line.rfind("  ", 0) != 0) break;
-    std::istringstream words(line);
-    std::string name;
-    words >> name;
-    out.push_back(name);
-  }
-  return out;
-}
+std::vector<std::string> subcommands() { return subcommands_in_help(run_edsc({"--help"}).output); }
 
 TEST_F(Cli, HelpOfEverySubcommandShowsChoicesAsWords) {
   const auto commands = subcommands();

@@ -53,6 +53,33 @@ TEST(Verify, RightSightCaptureShowsOnlyTheMinorRevision) {
   EXPECT_NE(run.output.find("0 errors, 0 warnings, 1 note"), std::string::npos) << run.output;
 }
 
+// docs/verify.md: -Werror=verify-minor-revision makes the drift fail CI; a
+// later -Wno-error=... or -Wno-error takes that back (later flags win).
+TEST(Verify, WerrorOnTheMinorRevisionNoteFailsTheRun) {
+  const auto run = verify(diffuse, startup, "-Werror=verify-minor-revision");
+  EXPECT_EQ(run.status, 1) << run.output;
+  EXPECT_NE(run.output.find("rightsight-42ef-startup.tsv:21:1: error:"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("1 error, 0 warnings, 0 notes"), std::string::npos) << run.output;
+  EXPECT_EQ(verify(diffuse, startup, "-Werror=verify-minor-revision -Wno-error").status, 0);
+  EXPECT_EQ(verify(diffuse, startup, "-Werror=verify-minor-revision -Wno-error=verify-minor-revision").status, 0);
+  // -Werror alone promotes warnings, not notes.
+  EXPECT_EQ(verify(diffuse, startup, "-Werror").status, 0);
+}
+
+TEST(Verify, DecodeRefusesOptionsItWouldIgnore) {
+  for (const std::string& extra :
+       std::vector<std::string>{"--capture " + quoted(startup), "--mac 3", "-Werror", "--format json"}) {
+    const auto run = run_shell(edsc_command() + " verify --decode " + quoted(startup) + " " + extra);
+    EXPECT_EQ(run.status, 2) << extra << "\n" << run.output;
+    EXPECT_NE(run.output.find("edsc: error: --decode prints a capture's conversation alone"), std::string::npos)
+        << run.output;
+  }
+  const auto eds = run_shell(edsc_command() + " verify " + quoted(diffuse) + " --decode " + quoted(startup));
+  EXPECT_EQ(eds.status, 2) << eds.output;
+  EXPECT_NE(eds.output.find("an EDS file"), std::string::npos) << eds.output;
+  EXPECT_EQ(run_shell(edsc_command() + " verify --decode " + quoted(startup)).status, 0);
+}
+
 TEST(Verify, JsonAndSarifCarryTheSameFinding) {
   const auto json = verify(diffuse, startup, "--format json");
   ASSERT_EQ(json.status, 0) << json.output;

@@ -1,0 +1,301 @@
+// The output policy (io/output_target.hpp, docs/cli.md "Output files") for
+// every command that writes, against every kind of target: a table of
+// command x target kind, each cell run as a user would. Nothing but the named
+// output may change, and a non-regular file is never replaced by a regular one.
+#include <sys/socket.h>
+#include <sys/sysmacros.h>
+#include <sys/un.h>
+
+#include <atomic>
+#include <cstring>
+#include <functional>
+#include <map>
+#include <thread>
+
+#include "reliability/reliability_support.hpp"
+
+namespace edsc::reliability_test {
+namespace {
+
+// Valid (so every command succeeds on it) but not laid out canonically, so
+// that `fmt` writes something other than its input.
+std::string input_eds() {
+  std::string s = good_eds;
+  const std::string from = "ProdCode = 1;";
+  s.replace(s.find(from), from.size(), "ProdCode =    1 ;");
+  return s;
+}
+const std::string device_json =
+    R"({"vendor": 65535, "product_type": 7, "product_code": 9, "name": "Policy Node", "network": "devicenet",
+        "input_bytes": 1, "date": "01-02-2024"})";
+
+struct command {
+  std::string name;
+  // The arguments that write to `target`, given the scratch folder.
+  std::function<std::vector<std::string>(const fs::path& dir, const std::string& target)> args;
+  // The inputs it reads: an output naming one of them must be refused.
+  std::function<std::vector<fs::path>(const fs::path& dir)> inputs;
+};
+
+fs::path eds_in(const fs::path& d) { return d / "in" / "dev.eds"; }
+
+std::vector<command> commands() {
+  auto eds_only = [](const fs::path& d) { return std::vector<fs::path>{eds_in(d)}; };
+  return {
+      {"fmt", [](const fs::path& d, const std::string& t) { return std::vector<std::string>{"fmt", eds_in(d), "-o", t}; },
+       eds_only},
+      {"fix", [](const fs::path& d, const std::string& t) { return std::vector<std::string>{"fix", eds_in(d), "-o", t}; },
+       eds_only},
+      {"edit",
+       [](const fs::path& d, const std::string& t) {
+         return std::vector<std::string>{"edit", eds_in(d), "--set", "Device.MajRev=2", "-o", t};
+       },
+       eds_only},
+      {"header",
+       [](const fs::path& d, const std::string& t) { return std::vector<std::string>{"header", eds_in(d), "-o", t}; },
+       eds_only},
+      {"doc", [](const fs::path& d, const std::string& t) { return std::vector<std::string>{"doc", eds_in(d), "-o", t}; },
+       eds_only},
+      {"new",
+       [](const fs::path& d, const std::string& t) {
+         return std::vector<std::string>{"new", "--from", d / "in" / "device.json", "-o", t};
+       },
+       [](const fs::path& d) { return std::vector<fs::path>{d / "in" / "device.json"}; }},
+      {"net map",
+       [](const fs::path& d, const std::string& t) {
+         return std::vector<std::string>{"net", "map", d / "in" / "networks" / "thesis.toml", "-o", t};
+       },
+       [](const fs::path& d) {
+         return std::vector<fs::path>{d / "in" / "networks" / "thesis.toml", d / "in" / "nodes" / "level.eds",
+                                      d / "in" / "rightsight-42ef-3byte.eds"};
+       }},
+  };
+}
+
+class OutputPolicy : public Cli {
+ protected:
+  void SetUp() override {
+    Cli::SetUp();
+    file("in/dev.eds", input_eds());
+    file("in/device.json", device_json);
+    const fs::path eds = fs::path(EDSC_PROJECT_DIR) / "eds";
+    fs::create_directories(dir_ / "in" / "networks");
+    fs::copy(eds / "networks" / "thesis.toml", dir_ / "in" / "networks" / "thesis.toml");
+    fs::copy(eds / "nodes", dir_ / "in" / "nodes");
+    fs::copy(eds / "rightsight-42ef-3byte.eds", dir_ / "in" / "rightsight-42ef-3byte.eds");
+  }
+
+  // Every input's bytes, to show none of them changed.
+  std::map<fs::path, std::string> snapshot(const command& c) {
+    std::map<fs::path, std::string> out;
+    for (const auto& p : c.inputs(dir_)) out[p] = read_bytes(p);
+    return out;
+  }
+
+  // The bytes a command writes to a plain new file named `out` in a folder of
+  // its own (file names reach some outputs, such as a header's guard).
+  std::string reference(const command& c) {
+    const auto d = dir_ / ("ref-" + std::to_string(counter_++));
+    fs::create_directory(d);
+    const auto r = run_edsc(c.args(dir_, (d / "out").string()), time_limit);
+    EXPECT_EQ(r.status, 0) << c.name << "\n" << r.output;
+    return read_bytes(d / "out");
+  }
+
+  fs::path fresh_dir() {
+    const auto d = dir_ / ("t-" + std::to_string(counter_++));
+    fs::create_directory(d);
+    return d;
+  }
+
+  int counter_ = 0;
+};
+
+TEST_F(OutputPolicy, RegularTargetsAreWrittenAtomically) {
+  for (const auto& c : commands()) {
+    const auto want = reference(c);
+    ASSERT_FALSE(want.empty()) << c.name;
+    // An existing file that is not an input is replaced whole.
+    const auto d = fresh_dir();
+    write_bytes(d / "out", std::string(100000, 'x'));
+    const auto r = run_edsc(c.args(dir_, (d / "out").string()), time_limit);
+    EXPECT_EQ(r.status, 0) << c.name << "\n" << r.output;
+    EXPECT_EQ(read_bytes(d / "out"), want) << c.name;
+    EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(d / "out"))) << c.name;
+  }
+}
+
+TEST_F(OutputPolicy, TheInputIsRefusedHoweverItIsNamed) {
+  for (const auto& c : commands()) {
+    const auto before = snapshot(c);
+    for (const auto& in : c.inputs(dir_)) {
+      const auto d = fresh_dir();
+      fs::create_symlink(in, d / "link");
+      fs::create_hard_link(in, d / "hard");
+      const std::vector<std::string> spellings{in.string(), (in.parent_path() / "." / in.filename()).string(),
+                                               (d / "link").string(), (d / "hard").string()};
+      for (const auto& t : spellings) {
+        const auto r = run_edsc(c.args(dir_, t), time_limit);
+        EXPECT_EQ(r.status, 2) << c.name << " -o " << t << "\n" << r.output;
+        EXPECT_NE(r.output.find("edsc: error: "), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("refusing to overwrite the input"), std::string::npos) << c.name << " -o " << t
+                                                                                       << "\n" << r.output;
+      }
+      EXPECT_TRUE(fs::is_symlink(d / "link")) << c.name;
+    }
+    EXPECT_EQ(snapshot(c), before) << c.name;
+  }
+}
+
+TEST_F(OutputPolicy, MissingFolderAndDirectoryAreRefused) {
+  for (const auto& c : commands()) {
+    const auto d = fresh_dir();
+    auto r = run_edsc(c.args(dir_, (d / "nowhere" / "out").string()), time_limit);
+    EXPECT_EQ(r.status, 2) << c.name << "\n" << r.output;
+    EXPECT_NE(r.output.find("does not exist"), std::string::npos) << c.name << "\n" << r.output;
+    EXPECT_FALSE(fs::exists(d / "nowhere")) << c.name;
+    fs::create_directory(d / "dir");
+    r = run_edsc(c.args(dir_, (d / "dir").string()), time_limit);
+    EXPECT_EQ(r.status, 2) << c.name << "\n" << r.output;
+    EXPECT_NE(r.output.find("is a directory"), std::string::npos) << c.name << "\n" << r.output;
+    EXPECT_TRUE(fs::is_directory(d / "dir") && fs::is_empty(d / "dir")) << c.name;
+  }
+}
+
+TEST_F(OutputPolicy, DashIsStandardOutputEverywhere) {
+  for (const auto& c : commands()) {
+    const auto d = fresh_dir();
+    const auto r = run_edsc(c.args(dir_, "-"), time_limit);
+    EXPECT_EQ(r.status, 0) << c.name << "\n" << r.output;
+    EXPECT_GT(r.output.size(), 100u) << c.name;
+    EXPECT_FALSE(fs::exists("-")) << c.name;
+    EXPECT_FALSE(fs::exists(dir_ / "-")) << c.name;
+  }
+}
+
+TEST_F(OutputPolicy, AFifoIsWrittenThroughAndStaysAFifo) {
+  for (const auto& c : commands()) {
+    const auto want = reference(c);
+    const auto d = fresh_dir();
+    ASSERT_EQ(::mkfifo((d / "out").c_str(), 0600), 0);
+    // A reader first (non-blocking), so the writer's open does not wait, and
+    // on its own thread, so an output larger than the pipe cannot stall it.
+    const int rd = ::open((d / "out").c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    ASSERT_GE(rd, 0);
+    std::atomic<bool> done{false};
+    std::string got;
+    std::thread reader([&] {
+      char buf[65536];
+      for (;;) {
+        pollfd p{rd, POLLIN, 0};
+        ::poll(&p, 1, 20);
+        const ssize_t n = ::read(rd, buf, sizeof buf);
+        if (n > 0) got.append(buf, static_cast<std::size_t>(n));
+        else if (done) break;  // no writer left and edsc has ended: all read
+      }
+    });
+    const auto r = run_edsc(c.args(dir_, (d / "out").string()), time_limit);
+    done = true;
+    reader.join();
+    ::close(rd);
+    EXPECT_EQ(r.status, 0) << c.name << "\n" << r.output;
+    EXPECT_EQ(got, want) << c.name;
+    EXPECT_TRUE(fs::is_fifo(fs::symlink_status(d / "out"))) << c.name;
+  }
+}
+
+TEST_F(OutputPolicy, ASymlinkIsWrittenThroughAndStaysALink) {
+  for (const auto& c : commands()) {
+    const auto want = reference(c);
+    const auto d = fresh_dir();
+    fs::create_directory(d / "real");
+    write_bytes(d / "real" / "out", "old");
+    fs::create_symlink(fs::path("real") / "out", d / "out");
+    const auto r = run_edsc(c.args(dir_, (d / "out").string()), time_limit);
+    EXPECT_EQ(r.status, 0) << c.name << "\n" << r.output;
+    EXPECT_TRUE(fs::is_symlink(d / "out")) << c.name;
+    EXPECT_EQ(read_bytes(d / "real" / "out"), want) << c.name;
+    // The replacement was made beside the target: no temporary left anywhere.
+    EXPECT_EQ(std::distance(fs::directory_iterator(d / "real"), fs::directory_iterator{}), 1) << c.name;
+    EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator{}), 2) << c.name;
+  }
+}
+
+TEST_F(OutputPolicy, ADanglingSymlinkAndASocketAreRefused) {
+  for (const auto& c : commands()) {
+    const auto d = fresh_dir();
+    fs::create_symlink(d / "nothing", d / "out");
+    auto r = run_edsc(c.args(dir_, (d / "out").string()), time_limit);
+    EXPECT_EQ(r.status, 2) << c.name << "\n" << r.output;
+    EXPECT_NE(r.output.find("symbolic link to nothing"), std::string::npos) << c.name << "\n" << r.output;
+    EXPECT_TRUE(fs::is_symlink(d / "out"));
+    EXPECT_FALSE(fs::exists(d / "nothing"));
+
+    const int s = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    ASSERT_GE(s, 0);
+    sockaddr_un addr{};
+    addr.sun_family = AF_UNIX;
+    const auto sock = (d / "sock").string();
+    ASSERT_LT(sock.size(), sizeof addr.sun_path);
+    std::memcpy(addr.sun_path, sock.c_str(), sock.size() + 1);
+    ASSERT_EQ(::bind(s, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+    r = run_edsc(c.args(dir_, sock), time_limit);
+    ::close(s);
+    EXPECT_EQ(r.status, 2) << c.name << "\n" << r.output;
+    EXPECT_NE(r.output.find("is a socket"), std::string::npos) << c.name << "\n" << r.output;
+    EXPECT_TRUE(fs::is_socket(fs::symlink_status(sock))) << c.name;
+  }
+}
+
+// Device nodes need root (CAP_MKNOD), as CI has. The nodes are made in the
+// scratch folder: the machine's own /dev is never a target of a test.
+TEST_F(OutputPolicy, DevicesAreWrittenThroughOrRefusedNeverReplaced) {
+  const auto null_dev = dir_ / "null";
+  if (::mknod(null_dev.c_str(), S_IFCHR | 0666, ::makedev(1, 3)) != 0)
+    GTEST_SKIP() << "mknod needs root (CAP_MKNOD): " << std::strerror(errno);
+  // A block device node that names no disk of this machine (loop minor 250):
+  // refused before it is opened, whatever it would be.
+  const auto blk = dir_ / "blk";
+  ASSERT_EQ(::mknod(blk.c_str(), S_IFBLK | 0600, ::makedev(7, 250)), 0) << std::strerror(errno);
+  for (const auto& c : commands()) {
+    auto r = run_edsc(c.args(dir_, null_dev.string()), time_limit);
+    EXPECT_EQ(r.status, 0) << c.name << "\n" << r.output;
+    EXPECT_TRUE(fs::is_character_file(fs::symlink_status(null_dev))) << c.name;
+    r = run_edsc(c.args(dir_, blk.string()), time_limit);
+    EXPECT_EQ(r.status, 2) << c.name << "\n" << r.output;
+    EXPECT_NE(r.output.find("is a block device"), std::string::npos) << c.name << "\n" << r.output;
+    EXPECT_TRUE(fs::is_block_file(fs::symlink_status(blk))) << c.name;
+  }
+}
+
+TEST_F(OutputPolicy, InPlaceThroughASymlinkKeepsTheLink) {
+  const auto real = file("real/dev.eds", input_eds());
+  fs::create_symlink(real, dir_ / "link.eds");
+  const auto r = run_edsc({"fmt", "--in-place", (dir_ / "link.eds").string()}, time_limit);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(fs::is_symlink(dir_ / "link.eds"));
+  EXPECT_NE(read_bytes(real), input_eds());
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "real"), fs::directory_iterator{}), 1);
+}
+
+TEST_F(OutputPolicy, ASiteIsNotWrittenIntoTheFolderItDocuments) {
+  const auto lib = dir_ / "in" / "nodes";
+  auto r = run_edsc({"doc", lib.string(), "-o", lib.string()}, time_limit);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("cannot go into the folder it documents"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(lib / "index.html"));
+  // A new folder inside the library is fine: it holds no source.
+  r = run_edsc({"doc", lib.string(), "-o", (lib / "site").string()}, time_limit);
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(fs::exists(lib / "site" / "index.html"));
+}
+
+TEST_F(OutputPolicy, StreamNamesWriteToTheOpenDescriptor) {
+  // /dev/stdout as -o is the stream edsc was given, not a file to replace.
+  const auto r = run_edsc({"header", eds_in(dir_).string(), "-o", "/dev/stdout"}, time_limit);
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("#define EDS_VENDOR_ID"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace edsc::reliability_test
