@@ -24,7 +24,14 @@ TEST(Consumer, FindsTheInstalledPackageAndRegeneratesOnEdsChange) {
   ASSERT_EQ(install.status, 0) << install.output;
   EXPECT_TRUE(fs::exists(prefix / "bin" / "edsc"));
   EXPECT_TRUE(fs::exists(prefix / "share" / "edsc" / "templates" / "header.h.mustache"));
-  EXPECT_TRUE(fs::exists(prefix / "lib" / "cmake" / "edsc" / "edscConfig.cmake"));
+  EXPECT_TRUE(fs::exists(prefix / "share" / "cmake" / "edsc" / "edscConfig.cmake"));
+  // Generated at build time from the command definitions.
+  EXPECT_TRUE(fs::exists(prefix / "share" / "man" / "man1" / "edsc.1.gz"));
+  EXPECT_TRUE(fs::exists(prefix / "share" / "man" / "man1" / "edsc-net-map.1.gz"));
+  EXPECT_TRUE(fs::exists(prefix / "share" / "bash-completion" / "completions" / "edsc"));
+  EXPECT_TRUE(fs::exists(prefix / "share" / "zsh" / "vendor-completions" / "_edsc"));
+  EXPECT_TRUE(fs::exists(prefix / "share" / "fish" / "vendor_completions.d" / "edsc.fish"));
+  EXPECT_TRUE(fs::exists(prefix / "share" / "doc" / "edsc" / "cli.md"));
 
   const auto eds = dir.path() / "device.eds";
   fs::copy_file(fs::path(EDSC_PROJECT_DIR) / "eds" / "rightsight-42ef-diffuse.eds", eds);

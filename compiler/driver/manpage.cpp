@@ -1,0 +1,184 @@
+#include "driver/manpage.hpp"
+
+#include <map>
+
+#include <fmt/format.h>
+
+#include "diag/catalogue.hpp"
+
+namespace edsc::driver {
+
+namespace {
+
+// Text as roff reads it: a backslash is \e, a hyphen in an option name
+// \-, and a line may not start with a control character.
+std::string roff(std::string_view text) {
+  std::string out;
+  bool line_start = true;
+  for (const char c : text) {
+    if (line_start && (c == '.' || c == '\'')) out += "\\&";
+    if (c == '\\') out += "\\e";
+    else if (c == '-') out += "\\-";
+    else out += c;
+    line_start = c == '\n';
+  }
+  return out;
+}
+
+std::string page_name(const cli_command& c) {
+  std::string name = "edsc";
+  for (const char ch : c.path) name += ch == ' ' ? '-' : ch;
+  if (!c.path.empty()) name.insert(4, "-");
+  return name;
+}
+
+struct example {
+  const char* command;
+  const char* what;
+};
+
+// A few typical uses per command, as a user would type them.
+const std::map<std::string, std::vector<example>>& examples() {
+  static const std::map<std::string, std::vector<example>> table{
+      {"check",
+       {{"edsc check device.eds", "check one file"},
+        {"edsc check --format sarif library/ > edsc.sarif", "check a folder for code scanning in CI"},
+        {"edsc check -Werror -Wno-error=io-info device.eds", "fail on warnings, except those of one group"}}},
+      {"rules", {{"edsc rules", "list every diagnostic"}, {"edsc rules duplicate-entry", "explain one"}}},
+      {"edit",
+       {{"edsc edit device.eds --set Device.MajRev=2 --in-place", "change one field, nothing else"},
+        {"edsc edit device.eds --resize Input1=3 -o new.eds", "give a DeviceNet input 3 bytes"}}},
+      {"fix", {{"edsc fix --in-place device.eds", "apply the certain repairs"}}},
+      {"fmt",
+       {{"edsc fmt --in-place device.eds", "lay the file out canonically"},
+        {"edsc fmt --check device.eds", "fail when it is not (CI)"}}},
+      {"new",
+       {{"edsc new --vendor 65535 --product-type 7 --product-code 2 --name 'Sensor' --input-bytes 3 -o sensor.eds",
+         "start the EDS of a new DeviceNet node"}}},
+      {"dump", {{"edsc dump device.eds | jq .identity", "read the typed model"}}},
+      {"header", {{"edsc header device.eds -o device_eds.h", "the header firmware compiles against"}}},
+      {"verify", {{"edsc verify device.eds --capture startup.log", "compare a CAN capture with the EDS"}}},
+      {"lsp", {{"edsc lsp", "started by an editor, not by hand"}}},
+      {"net check", {{"edsc net check plant.toml", "judge a DeviceNet network"}}},
+      {"net map", {{"edsc net map plant.toml --format svg -o map.svg", "draw the scanner's images"}}},
+      {"doc",
+       {{"edsc doc device.eds -o device.html", "a datasheet"}, {"edsc doc library/ -o site/", "a site for a library"}}},
+      {"diff", {{"edsc diff old.eds new.eds", "what a new revision breaks"}}},
+      {"completions", {{"edsc completions bash > ~/.local/share/bash-completion/completions/edsc", "install bash's"}}},
+  };
+  return table;
+}
+
+void add_synopsis(const cli_command& c, std::string& out) {
+  out += fmt::format(".SH SYNOPSIS\n.B edsc{}{}\n", c.path.empty() ? "" : " ", roff(c.path));
+  if (!c.subcommands.empty()) {
+    out += "\\fICOMMAND\\fR [\\fIOPTIONS\\fR]\n";
+    return;
+  }
+  out += "[\\fIOPTIONS\\fR]";
+  for (const auto& o : c.options) {
+    if (!o.positional) continue;
+    const auto word = fmt::format("\\fI{}\\fR{}", roff(o.name), o.repeats ? "..." : "");
+    out += o.required ? " " + word : " [" + word + "]";
+  }
+  out += "\n";
+}
+
+void add_options(const cli_command& c, std::string& out) {
+  bool any = false;
+  for (const auto& o : c.options) {
+    if (!any) out += ".SH OPTIONS\n";
+    any = true;
+    std::string names;
+    if (o.positional) names = fmt::format("\\fI{}\\fR", roff(o.name));
+    for (const auto& n : o.shorts) names += (names.empty() ? "" : ", ") + fmt::format("\\fB{}\\fR", roff(n));
+    for (const auto& n : o.longs) names += (names.empty() ? "" : ", ") + fmt::format("\\fB{}\\fR", roff(n));
+    if (!o.positional && o.takes_value) names += fmt::format(" \\fI{}\\fR", roff(o.value_name));
+    out += fmt::format(".TP\n{}\n{}\n", names, roff(o.help));
+  }
+  out += ".TP\n\\fB\\-h\\fR, \\fB\\-\\-help\\fR\nPrint the options and exit.\n";
+}
+
+const char* exit_status =
+    ".SH EXIT STATUS\n"
+    ".TP\n0\nSuccess: no errors (warnings allowed).\n"
+    ".TP\n1\nThe input has errors (diagnostics were printed), or what was compared disagrees.\n"
+    ".TP\n2\nUsage error or I/O failure: a bad option, a missing or unreadable file, an output that would "
+    "overwrite an input.\n";
+
+void add_examples(const cli_command& c, std::string& out) {
+  const auto it = examples().find(c.path);
+  if (it == examples().end()) return;
+  out += ".SH EXAMPLES\n";
+  for (const auto& e : it->second) {
+    std::string what = e.what;
+    what[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(what[0])));
+    out += fmt::format(".TP\n.B {}\n{}.\n", roff(e.command), roff(what));
+  }
+}
+
+void add_see_also(const cli_command& top, const cli_command& c, std::string& out) {
+  std::vector<std::string> refs;
+  if (&top != &c) refs.push_back("\\fBedsc\\fR(1)");
+  for (const auto& s : top.subcommands) {
+    if (s.subcommands.empty()) {
+      if (s.path != c.path) refs.push_back(fmt::format("\\fB{}\\fR(1)", roff(page_name(s))));
+      continue;
+    }
+    for (const auto& n : s.subcommands)
+      if (n.path != c.path) refs.push_back(fmt::format("\\fB{}\\fR(1)", roff(page_name(n))));
+  }
+  out += ".SH SEE ALSO\n";
+  for (std::size_t i = 0; i < refs.size(); ++i) out += refs[i] + (i + 1 < refs.size() ? ",\n" : "\n");
+  out += ".PP\nThe documentation in /usr/share/doc/edsc/ (cli.md is the command reference).\n";
+}
+
+std::string rule_list() {
+  std::string out = ".SH DIAGNOSTICS\nEvery diagnostic edsc reports, with its default severity and group:\n";
+  for (const auto& r : all_rules())
+    out += fmt::format(".TP\n\\fB{}\\fR ({}, {})\n{}\n", roff(r.name), to_string(r.default_level), roff(r.group),
+                       roff(r.summary));
+  return out;
+}
+
+std::string page(const cli_command& top, const cli_command& c, const std::string& version) {
+  const auto name = page_name(c);
+  std::string upper;
+  for (const char ch : name) upper += static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+  std::string out = fmt::format(".TH {} 1 \"\" \"edsc {}\" \"edsc manual\"\n", roff(upper), roff(version));
+  out += fmt::format(".SH NAME\n{} \\- {}\n", roff(name), roff(c.summary));
+  add_synopsis(c, out);
+  out += ".SH DESCRIPTION\n" + roff(c.summary) + ".\n";
+  if (!c.subcommands.empty()) {
+    out += ".SH COMMANDS\n";
+    for (const auto& s : c.subcommands)
+      out += fmt::format(".TP\n\\fB{}\\fR\n{}. See \\fB{}\\fR(1).\n", roff(s.name), roff(s.summary),
+                         roff(s.subcommands.empty() ? page_name(s) : page_name(s.subcommands.front())));
+  }
+  add_options(c, out);
+  out += exit_status;
+  add_examples(c, out);
+  if (c.path == "rules") out += rule_list();
+  if (c.path.empty())
+    out += ".SH ENVIRONMENT\n.TP\nNO_COLOR\nWhen set, text reports are not coloured (as --color=never).\n";
+  out += ".SH FILES\n.TP\n/usr/share/doc/edsc/\nThe user documentation.\n";
+  if (c.path == "header") out += ".TP\n/usr/share/edsc/templates/\nThe built-in header templates, a start for --template-dir.\n";
+  add_see_also(top, c, out);
+  return out;
+}
+
+void collect(const cli_command& top, const cli_command& c, const std::string& version,
+             std::vector<std::pair<std::string, std::string>>& out) {
+  out.emplace_back(page_name(c) + ".1", page(top, c, version));
+  for (const auto& s : c.subcommands) collect(top, s, version, out);
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::string>> man_pages(const cli_command& top, const std::string& version) {
+  std::vector<std::pair<std::string, std::string>> out;
+  collect(top, top, version, out);
+  return out;
+}
+
+}  // namespace edsc::driver

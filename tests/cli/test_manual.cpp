@@ -1,0 +1,86 @@
+// The man pages and shell completions are generated from the command
+// definitions (edsc _man, edsc completions): every command has its page,
+// every option of --help is in it, and bash completes what a user types.
+#include "cli/cli_support.hpp"
+
+namespace {
+
+using namespace edsc::cli_test;
+
+// What the generated script's _edsc offers for `words` (bash syntax; the last
+// word is the one being typed), run by bash in `cwd`, sorted.
+std::string complete_in(const fs::path& script, const fs::path& cwd, const std::string& words) {
+  const auto driver = cwd / "driver.sh";
+  write_bytes(driver, "export LC_ALL=C\nsource '" + script.string() + "'\nCOMP_WORDS=(" + words +
+                          ")\nCOMP_CWORD=$((${#COMP_WORDS[@]} - 1))\n_edsc\n"
+                          "printf '%s\\n' \"${COMPREPLY[@]}\" | sort | tr '\\n' ' '\n");
+  const auto out = cwd / "reply.txt";
+  const std::string cmd = "cd '" + cwd.string() + "' && bash driver.sh > reply.txt";
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  return read_bytes(out);
+}
+
+TEST_F(Cli, BashCompletesCommandsOptionsChoicesAndFiles) {
+  const auto r = run_edsc({"completions", "bash"});
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto script = file("edsc.bash", r.output);
+  const auto work = dir_ / "work";
+  fs::create_directories(work / "lib");
+  for (const char* f : {"a.eds", "B.EDS", "plant.toml", "notes.txt", "spec.json"}) write_bytes(work / f, "");
+  EXPECT_EQ(complete_in(script, work, "edsc che"), "check ");
+  EXPECT_EQ(complete_in(script, work, "edsc ne"), "net new ");
+  EXPECT_EQ(complete_in(script, work, "edsc net m"), "map ");
+  EXPECT_EQ(complete_in(script, work, "edsc check --form"), "--format ");
+  EXPECT_EQ(complete_in(script, work, "edsc check --format \"\""), "json sarif text ");
+  EXPECT_EQ(complete_in(script, work, "edsc check --format = s"), "sarif ");
+  EXPECT_EQ(complete_in(script, work, "edsc diff --keying \"\""), "compatible exact ");
+  // File arguments: EDS files (either case) and folders; a network file; JSON.
+  EXPECT_EQ(complete_in(script, work, "edsc check \"\""), "B.EDS a.eds lib ");
+  EXPECT_EQ(complete_in(script, work, "edsc net map \"\""), "lib plant.toml ");
+  EXPECT_EQ(complete_in(script, work, "edsc new --from \"\""), "lib spec.json ");
+  EXPECT_EQ(complete_in(script, work, "edsc rules duplicate-s"), "duplicate-section ");
+  EXPECT_EQ(complete_in(script, work, "edsc check -Werror=io-info-cos"), "-Werror=io-info-cos-cyclic ");
+}
+
+TEST_F(Cli, ZshAndFishScriptsParse) {
+  for (const auto& [shell, check] : {std::pair<std::string, std::string>{"zsh", "zsh -n"}, {"fish", "fish -n"}}) {
+    const auto r = run_edsc({"completions", shell});
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("max-errors"), std::string::npos) << shell;
+    const auto p = file("edsc." + shell, r.output);
+    if (std::system(("command -v " + shell + " >/dev/null").c_str()) != 0) continue;  // parsed where installed
+    EXPECT_EQ(std::system((check + " '" + p.string() + "'").c_str()), 0) << shell;
+  }
+  EXPECT_EQ(run_edsc({"completions", "tcsh"}).status, 2);
+}
+
+TEST_F(Cli, EveryCommandHasAManPageListingItsOptions) {
+  ASSERT_EQ(run_edsc({"_man", (dir_ / "man").string()}).status, 0);
+  const std::vector<std::pair<std::string, std::vector<std::string>>> expected{
+      {"edsc.1", {"\\fBcheck\\fR", "\\fBnet\\fR", "NO_COLOR"}},
+      {"edsc-check.1", {"\\-\\-max\\-errors", "\\-\\-format", "\\fB\\-W\\fR", "EXIT STATUS", "EXAMPLES", "SEE ALSO"}},
+      {"edsc-net-map.1", {"\\-\\-output", "text|json|svg|csv|c|modbus"}},
+      {"edsc-rules.1", {"DIAGNOSTICS", "duplicate\\-entry", "input\\-utf16"}},
+      {"edsc-new.1", {"\\-\\-input\\-bytes", "\\-\\-output\\-bytes"}},
+  };
+  for (const auto& [page, words] : expected) {
+    const auto text = read_bytes(dir_ / "man" / page);
+    ASSERT_FALSE(text.empty()) << page;
+    for (const auto& w : words) EXPECT_NE(text.find(w), std::string::npos) << page << " lacks " << w;
+  }
+  // Hidden spellings are not documented as options.
+  EXPECT_EQ(read_bytes(dir_ / "man" / "edsc-new.1").find("output\\-file"), std::string::npos);
+  // man renders every page without a complaint.
+  if (std::system("command -v man >/dev/null") != 0) GTEST_SKIP() << "man is not installed";
+  for (const auto& e : fs::directory_iterator(dir_ / "man")) {
+    const auto cmd = "MANWIDTH=80 man --warnings -l '" + e.path().string() + "' 2>&1 >/dev/null";
+    std::FILE* p = ::popen(cmd.c_str(), "r");
+    std::string warnings;
+    char buf[4096];
+    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) warnings.append(buf, n);
+    ::pclose(p);
+    EXPECT_EQ(warnings, "") << e.path();
+  }
+}
+
+}  // namespace
