@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
     register_net(app, run);
     register_doc(app, run);
     register_diff(app, run);
+    register_probe(app, run);
     try {
       app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
