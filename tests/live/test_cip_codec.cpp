@@ -86,6 +86,18 @@ TEST(cip_encap, list_identity_reply_with_a_lying_name_length_is_an_error) {
   EXPECT_EQ(ids.error().offset, 24u + 39u);  // where the name starts
 }
 
+TEST(cip_encap, list_services_reply) {
+  // one item: type 0x0100, 20 bytes: version 1, capability 0x0120 (CIP over
+  // TCP and class 0/1 over UDP), "Communications" NUL-padded to 16 bytes
+  const auto data = unhex("01 00 00 01 14 00 01 00 20 01 43 6F 6D 6D 75 6E 69 63 61 74 69 6F 6E 73 00 00");
+  auto s = decode_list_services(data, 24);
+  ASSERT_TRUE(s.ok()) << s.error().what;
+  ASSERT_EQ(s->size(), 1u);
+  EXPECT_EQ(s->front().name, "Communications");
+  EXPECT_EQ(s->front().capability, 0x0120);
+  EXPECT_FALSE(decode_list_services(byte_view(data).first(20), 24).ok());
+}
+
 TEST(cip_encap, cpf_item_longer_than_the_buffer_is_an_error) {
   // one item, type 0x00B2, length 9, only 3 bytes follow
   auto r = decode_cpf(unhex("01 00 B2 00 09 00 AA BB CC"), 0);
@@ -100,7 +112,8 @@ TEST(cip_encap, send_rr_data_wraps_a_request) {
   const auto req = encode_request(service::get_attributes_all, logical_path(0x01, 1));
   EXPECT_EQ(hex(req), "01 02 20 01 24 01");
   EXPECT_EQ(hex(send_rr_data(req, 3)), "00 00 00 00 03 00 02 00 00 00 00 00 B2 00 06 00 01 02 20 01 24 01");
-  auto back = decode_send_rr_data(send_rr_data(req, 3), 24);
+  const auto wrapped = send_rr_data(req, 3);  // the decoded item views these bytes
+  auto back = decode_send_rr_data(wrapped, 24);
   ASSERT_TRUE(back.ok());
   EXPECT_EQ(hex(back.value()), "01 02 20 01 24 01");
 }
