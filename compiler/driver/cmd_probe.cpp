@@ -34,6 +34,7 @@ struct library_match {
   unsigned major = 0, minor = 0;
   live::keying verdict = live::keying::none;
   std::vector<std::uint32_t> instances;  // assembly instances it names
+  std::string vendor_name;               // its VendName
 };
 
 std::vector<library_match> match_library(const std::string& dir, const cip::identity& id, std::string& problem) {
@@ -53,6 +54,7 @@ std::vector<library_match> match_library(const std::string& dir, const cip::iden
     m.major = d.maj_rev.is_integer() ? static_cast<unsigned>(d.maj_rev.as_uint()) : 0;
     m.minor = d.min_rev.is_integer() ? static_cast<unsigned>(d.min_rev.as_uint()) : 0;
     m.verdict = live::keying_verdict(m.major, m.minor, id.major, id.minor);
+    if (d.vend_name.ok()) m.vendor_name = std::string(d.vend_name.text);
     for (const auto& t : live::plan_assemblies(a->dev)) m.instances.push_back(t.instance);
     out.push_back(std::move(m));
   }
@@ -65,7 +67,11 @@ std::string render_probe_text(const probe_cli& cli, const live::probe_result& r,
                         const std::string& lib_problem) {
   const auto& id = r.identity;
   std::string out = fmt::format("{} ({})\n", cli.host, r.identity_source);
-  out += fmt::format("  vendor        {}\n", id.vendor);
+  // edsc has no vendor table: the name is what a matching EDS file calls it.
+  const auto named = std::find_if(lib.begin(), lib.end(), [](const auto& m) { return !m.vendor_name.empty(); });
+  out += named == lib.end() ? fmt::format("  vendor        {}\n", id.vendor)
+                            : fmt::format("  vendor        {} ({}, as {} names it)\n", id.vendor, named->vendor_name,
+                                          named->path);
   out += fmt::format("  device type   {}\n", id.device_type);
   out += fmt::format("  product code  {}\n", id.product_code);
   out += fmt::format("  revision      {}.{}\n", id.major, id.minor);
@@ -73,6 +79,8 @@ std::string render_probe_text(const probe_cli& cli, const live::probe_result& r,
   out += fmt::format("  status        {}\n", cip::describe_identity_status(id.status));
   out += fmt::format("  product name  \"{}\"\n", id.product_name);
   if (id.state != 0xFF) out += fmt::format("  state         {}\n", id.state);
+  for (const auto& sv : r.services)
+    out += fmt::format("  service       \"{}\" version {}, capability 0x{:04X}\n", sv.name, sv.version, sv.capability);
   out += "assemblies (instance: bytes)\n";
   for (const auto& a : r.assemblies) out += fmt::format("  {:>5}: {}\n", a.instance, a.size);
   if (r.assemblies.empty()) out += "  none readable\n";
@@ -101,6 +109,9 @@ std::string render_probe_json(const probe_cli& cli, const live::probe_result& r,
                    {"status_text", cip::describe_identity_status(id.status)},
                    {"product_name", id.product_name}};
   if (id.state != 0xFF) j["identity"]["state"] = id.state;
+  j["services"] = nlohmann::ordered_json::array();
+  for (const auto& sv : r.services)
+    j["services"].push_back({{"name", sv.name}, {"version", sv.version}, {"capability", sv.capability}});
   j["assemblies"] = nlohmann::ordered_json::array();
   for (const auto& a : r.assemblies) j["assemblies"].push_back({{"instance", a.instance}, {"size", a.size}});
   if (!r.assemblies_note.empty()) j["assemblies_note"] = r.assemblies_note;
@@ -108,6 +119,7 @@ std::string render_probe_json(const probe_cli& cli, const live::probe_result& r,
     j["library"] = nlohmann::ordered_json::array();
     for (const auto& m : lib)
       j["library"].push_back({{"path", m.path},
+                              {"vendor_name", m.vendor_name},
                               {"revision", {{"major", m.major}, {"minor", m.minor}}},
                               {"keying", live::to_string(m.verdict)}});
   }

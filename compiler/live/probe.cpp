@@ -43,6 +43,9 @@ result<probe_result> probe(const endpoint& device, const probe_options& opt) {
     out.identity = std::get<cip::identity>(id);
     out.identity_source = "Identity object";
   }
+  auto services = s.list_services();
+  if (auto* e = failed(services)) return *e;
+  out.services = std::get<std::vector<cip::service_info>>(services);
   // Assembly class attribute 2, Max Instance, bounds the scan.
   auto max = s.request(cip::service::get_attribute_single, cip::logical_path(0x04, 0, 2));
   if (auto* e = failed(max)) return *e;

@@ -18,7 +18,8 @@ struct assembly_size {
 
 struct probe_result {
   cip::identity identity;
-  std::string identity_source;           // "ListIdentity (TCP)", "ListIdentity (UDP)"
+  std::string identity_source;           // "Identity object", "ListIdentity (UDP)"
+  std::vector<cip::service_info> services;  // ListServices
   std::vector<assembly_size> assemblies;
   std::string assemblies_note;           // why the list may be incomplete
 };

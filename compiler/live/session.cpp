@@ -104,7 +104,7 @@ result<cip::bytes> session::exchange(cip::command cmd, cip::byte_view data, bool
   }
   if (registering) {
     handle_ = h->session;
-  } else if (cmd != cip::command::list_identity && h->session != handle_) {
+  } else if (cmd != cip::command::list_identity && cmd != cip::command::list_services && h->session != handle_) {
     return net_error{fmt::format("the device's {} carries session handle 0x{:08X}, ours is 0x{:08X}", body_what,
                                  h->session, handle_)};
   }
@@ -118,6 +118,14 @@ result<cip::identity> session::list_identity() {
   auto ids = cip::decode_list_identity(std::get<cip::bytes>(reply), cip::encap_header_size);
   if (!ids) return net_error{malformed("ListIdentity reply", ids.error())};
   return ids.value().front();
+}
+
+result<std::vector<cip::service_info>> session::list_services() {
+  auto reply = exchange(cip::command::list_services, {});
+  if (auto* e = failed(reply)) return *e;
+  auto services = cip::decode_list_services(std::get<cip::bytes>(reply), cip::encap_header_size);
+  if (!services) return net_error{malformed("ListServices reply", services.error())};
+  return services.value();
 }
 
 result<cip::reply> session::request(std::uint8_t service, cip::byte_view path, cip::byte_view data) {

@@ -21,8 +21,9 @@ class session {
   session& operator=(session&&) = default;
   ~session();
 
-  // ListIdentity on this TCP connection (no session needed, none used).
+  // ListIdentity and ListServices on this TCP connection (no session needed).
   [[nodiscard]] result<cip::identity> list_identity();
+  [[nodiscard]] result<std::vector<cip::service_info>> list_services();
   // One unconnected explicit request; the reply's service is checked.
   [[nodiscard]] result<cip::reply> request(std::uint8_t service, cip::byte_view path, cip::byte_view data = {});
   // A CIP request already encoded (Forward_Open), its service given for the check.

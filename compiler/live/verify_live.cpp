@@ -28,6 +28,7 @@ struct checker {
   const model::device& dev;
   const live_options& opt;
   live_report& out;
+  std::optional<cip::identity> device_id;
 
   void row(std::string check, std::string eds, std::string device, verdict v) {
     out.rows.push_back({std::move(check), std::move(eds), std::move(device), v});
@@ -52,6 +53,7 @@ struct checker {
   }
 
   void identity(const cip::identity& id) {
+    device_id = id;
     const auto& d = dev.identity;
     number("VendCode", d.vend_code, id.vendor);
     number("ProdType", d.prod_type, id.device_type);
@@ -136,7 +138,12 @@ struct checker {
       case 0x0114:
         return at(dev.identity.prod_code, c.from);
       case 0x0115: return at(dev.identity.prod_type, c.from);
-      case 0x0116: return at(dev.identity.maj_rev, c.from);
+      case 0x0116: {
+        // The revision field that differs: the minor one when the majors agree.
+        const auto& d = dev.identity;
+        const bool minor_only = device_id && d.maj_rev.is_integer() && d.maj_rev.as_uint() == device_id->major;
+        return at(minor_only ? d.min_rev : d.maj_rev, c.from);
+      }
       default: return at_path(c).where;
     }
   }
@@ -197,6 +204,14 @@ struct checker {
     const auto& c = *p.conn;
     const auto to_site = at(c.to_size, model::origin{0, at(c.to_format, c.from)});
     bool ok = true;
+    // Frames of a multicast T->O go to a group edsc does not join: not watched.
+    const bool multicast = p.request.to.type == cip::conn_type::multicast;
+    if (multicast) {
+      diag(diag_id::live_not_checked, to_site,
+           fmt::format("{} opened, its T->O frames not watched: they are multicast and edsc joins no group", name));
+      row(name, sizes, "open; T->O multicast, frames not watched", verdict::match);
+      return;
+    }
     const bool expects_frames = p.request.to.type != cip::conn_type::null;
     if (expects_frames && st.frames == 0) {
       ok = false;
@@ -245,7 +260,7 @@ std::string_view to_string(verdict v) {
 
 live_report verify_live(const endpoint& device, const model::device& dev, const live_options& opt) {
   live_report out;
-  checker ck{dev, opt, out};
+  checker ck{dev, opt, out, std::nullopt};
   auto opened = session::open(device, opt.timeout);
   if (auto* e = failed(opened)) {
     out.failure = *e;

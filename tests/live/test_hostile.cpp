@@ -115,6 +115,8 @@ struct hostile_case {
   const char* message;  // a part of the message edsc must give
 };
 
+void PrintTo(const hostile_case& c, std::ostream* os) { *os << c.name; }
+
 class live_hostile : public ::testing::TestWithParam<hostile_case> {};
 
 TEST_P(live_hostile, ends_with_a_message_and_exit_2) {
