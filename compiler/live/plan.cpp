@@ -82,7 +82,9 @@ cip::bytes config_data(const model::device& dev, const model::assembly* a, std::
       const auto& d = dev.params[r->target].default_value;
       if (d.is_integer()) v = static_cast<std::uint64_t>(d.as_int());
     }
-    for (std::uint64_t i = 0; i < bits / 8 && at < out.size(); ++i, ++at) out[at] = static_cast<std::uint8_t>(v >> (8 * i));
+    // Bytes past the 8 of a 64-bit default are zero (a shift by 64 or more is undefined).
+    for (std::uint64_t i = 0; i < bits / 8 && at < out.size(); ++i, ++at)
+      out[at] = i < 8 ? static_cast<std::uint8_t>(v >> (8 * i)) : 0;
   }
   return out;
 }
