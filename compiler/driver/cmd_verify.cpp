@@ -100,6 +100,10 @@ int run_verify_network(const verify_cli& cli) {
 
 int run_verify(const verify_cli& cli) {
   if (!cli.live.host.empty()) return run_verify_live(cli.live, cli.eds, cli.warning_flags, cli.format, cli.color);
+  if (cli.live.connections) {
+    print_error("--connections opens connections to a live device: it needs --live HOST");
+    return exit_failure;
+  }
   if (!cli.decode.empty()) return run_decode(cli);
   if (!cli.network.empty()) {
     if (cli.capture.empty()) {
