@@ -29,7 +29,7 @@ const char* to_string(keying k) {
 result<probe_result> probe(const endpoint& device, const probe_options& opt) {
   probe_result out;
   if (opt.udp) {
-    auto ids = list_identity_udp(device, opt.timeout, opt.broadcast);
+    auto ids = list_identity_udp(device, opt.timeout);
     if (auto* e = failed(ids)) return *e;
     out.identity = std::get<std::vector<cip::identity>>(ids).front();
     out.identity_source = "ListIdentity (UDP)";

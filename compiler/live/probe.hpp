@@ -27,7 +27,6 @@ struct probe_result {
 struct probe_options {
   std::chrono::milliseconds timeout{3000};
   bool udp = false;        // ListIdentity by UDP instead of TCP
-  bool broadcast = false;  // the user named a broadcast address
   std::vector<std::uint32_t> extra_instances;  // assembly instances to read besides the scan
 };
 

@@ -158,11 +158,10 @@ result<cip::identity> read_identity(session& s) {
   return d.value();
 }
 
-result<std::vector<cip::identity>> list_identity_udp(const endpoint& to, std::chrono::milliseconds timeout,
-                                                     bool broadcast) {
+result<std::vector<cip::identity>> list_identity_udp(const endpoint& to, std::chrono::milliseconds timeout) {
   sockaddr_in any{};
   any.sin_family = AF_INET;
-  auto sock = udp_socket(any, broadcast);
+  auto sock = udp_socket(any);
   if (auto* e = failed(sock)) return *e;
   const int s = std::get<fd>(sock).get();
   auto context = make_context(0x63);
@@ -171,7 +170,7 @@ result<std::vector<cip::identity>> list_identity_udp(const endpoint& to, std::ch
   context[0] = 0xF4, context[1] = 0x01;
   const auto msg = cip::encode_encap(cip::command::list_identity, 0, context, {});
   if (::sendto(s, msg.data(), msg.size(), 0, reinterpret_cast<const sockaddr*>(&to.addr), sizeof to.addr) < 0) {
-    if (errno == EACCES && !broadcast)
+    if (errno == EACCES)
       return net_error{fmt::format("{} is a broadcast address: edsc probes one device, by its own address",
                                    to.text)};
     return net_error{fmt::format("cannot send ListIdentity to {}: {}", to_string(to.addr), std::strerror(errno))};
@@ -185,8 +184,8 @@ result<std::vector<cip::identity>> list_identity_udp(const endpoint& to, std::ch
     socklen_t len = sizeof from;
     const auto n = ::recvfrom(s, buf, sizeof buf, 0, reinterpret_cast<sockaddr*>(&from), &len);
     if (n <= 0) continue;
-    // Unicast: only the address asked; a stray datagram is not the device.
-    if (!broadcast && from.sin_addr.s_addr != to.addr.sin_addr.s_addr) continue;
+    // Only the address asked; a stray datagram is not the device.
+    if (from.sin_addr.s_addr != to.addr.sin_addr.s_addr) continue;
     const cip::byte_view got(buf, static_cast<std::size_t>(n));
     auto h = cip::decode_encap_header(got);
     if (!h) { last_problem = malformed("ListIdentity header", h.error()); continue; }
@@ -198,7 +197,7 @@ result<std::vector<cip::identity>> list_identity_udp(const endpoint& to, std::ch
     auto ids = cip::decode_list_identity(got.subspan(cip::encap_header_size), cip::encap_header_size);
     if (!ids) { last_problem = malformed("ListIdentity reply", ids.error()); continue; }
     for (auto& id : ids.value()) found.push_back(std::move(id));
-    if (!broadcast) break;
+    break;
   }
   if (found.empty())
     return net_error{last_problem.empty() ? fmt::format("no ListIdentity reply from {} within the timeout", to.text)

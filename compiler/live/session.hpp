@@ -52,10 +52,9 @@ class session {
 [[nodiscard]] result<cip::identity> read_identity(session& s);
 
 // ListIdentity by UDP to one address: the first reply that comes from it.
-// With `broadcast` (the user named a broadcast address) every reply until
-// the timeout.
+// A broadcast address is refused (the socket has no SO_BROADCAST): edsc
+// asks one device, the one the user named.
 [[nodiscard]] result<std::vector<cip::identity>> list_identity_udp(const endpoint& to,
-                                                                   std::chrono::milliseconds timeout,
-                                                                   bool broadcast);
+                                                                   std::chrono::milliseconds timeout);
 
 }  // namespace edsc::live

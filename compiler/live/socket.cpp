@@ -142,12 +142,11 @@ std::optional<net_error> recv_exact(int s, std::uint8_t* out, std::size_t n, clo
   return std::nullopt;
 }
 
-result<fd> udp_socket(const sockaddr_in& local, bool broadcast) {
+result<fd> udp_socket(const sockaddr_in& local) {
   fd s(::socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0));
   if (!s.valid()) return net_error{fmt::format("cannot create a UDP socket: {}", errno_text(errno))};
   const int one = 1;
   ::setsockopt(s.get(), SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
-  if (broadcast) ::setsockopt(s.get(), SOL_SOCKET, SO_BROADCAST, &one, sizeof one);
   if (::bind(s.get(), reinterpret_cast<const sockaddr*>(&local), sizeof local) != 0)
     return net_error{fmt::format("cannot bind UDP {}: {}", to_string(local), errno_text(errno))};
   return s;

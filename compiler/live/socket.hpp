@@ -61,7 +61,7 @@ struct endpoint {
                                                   clock::time_point deadline, const char* what);
 
 // A UDP socket bound to `local` (port 0: any).
-[[nodiscard]] result<fd> udp_socket(const sockaddr_in& local, bool broadcast = false);
+[[nodiscard]] result<fd> udp_socket(const sockaddr_in& local);
 // Waits for readability until the deadline; false on timeout.
 [[nodiscard]] bool wait_readable(int s, clock::time_point deadline);
 

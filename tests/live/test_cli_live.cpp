@@ -22,6 +22,8 @@ TEST(live_cli, usage_errors_exit_2_with_a_reason) {
       {"verify --live 127.0.0.1", "needs the device's EDS file"},
       {"probe 127.0.0.1:99999", "bad port in 127.0.0.1:99999"},
       {"verify --live 127.0.0.1:0 " + eds, "bad port"},
+      // Without SO_BROADCAST the kernel refuses the datagram: nothing is sent.
+      {"probe 255.255.255.255 --udp --timeout 1", "is a broadcast address"},
   };
   for (const auto& [args, message] : cases) {
     const auto r = run_edsc(args, 60);
