@@ -1,6 +1,7 @@
 // `edsc verify FILE.eds --capture LOG [--mac N]`: a DeviceNet device's answers
 // on the bus compared with its EDS (docs/verify.md); `edsc verify --decode LOG`
-// prints the decoded conversation alone.
+// prints the decoded conversation alone; `--live HOST` checks a running
+// EtherNet/IP device instead (cmd_verify_live.cpp).
 #include <map>
 #include <memory>
 #include <optional>
@@ -14,6 +15,7 @@
 #include "driver/commands.hpp"
 #include "driver/net_report.hpp"
 #include "driver/output.hpp"
+#include "driver/verify_live.hpp"
 #include "io/read_file.hpp"
 #include "network/plan.hpp"
 #include "network/verify_network.hpp"
@@ -30,6 +32,7 @@ struct verify_cli {
   std::vector<std::string> warning_flags;
   color_mode color = color_mode::auto_detect;
   report_format format = report_format::text;
+  verify_live_cli live;
 };
 
 std::unique_ptr<source_file> read_input(const std::string& path) {
@@ -111,6 +114,11 @@ std::vector<std::string> ignored_by_decode(const verify_cli& cli) {
 }
 
 int run_verify(const verify_cli& cli) {
+  if (!cli.live.host.empty()) return run_verify_live(cli.live, cli.eds, cli.warning_flags, cli.format, cli.color);
+  if (cli.live.connections) {
+    print_error("--connections opens connections to a live device: it needs --live HOST");
+    return exit_failure;
+  }
   if (!cli.decode.empty()) {
     if (const auto extra = ignored_by_decode(cli); !extra.empty()) {
       print_error(fmt::format("--decode prints a capture's conversation alone; it takes no {}", fmt::join(extra, ", ")));
@@ -176,7 +184,9 @@ int run_verify(const verify_cli& cli) {
 void register_verify(CLI::App& app, command_action& run) {
   auto cli = std::make_shared<verify_cli>();
   auto* cmd = app.add_subcommand(
-      "verify", "Check a DeviceNet device's start-up answers in a CAN capture against its EDS (docs/verify.md)");
+      "verify",
+      "Check a device against its EDS: a DeviceNet device's answers in a CAN capture (docs/verify.md), or a "
+      "running EtherNet/IP device with --live (docs/live.md)");
   cmd->add_option("eds", cli->eds, "The device's EDS file");
   cmd->add_option("--capture", cli->capture, "CAN log: candump -l/-L, candump screen output, or step/dir/can_id/data TSV");
   cmd->add_option("--mac", cli->mac, "Compare only the node at this MAC ID (default: every node heard)")
@@ -185,6 +195,7 @@ void register_verify(CLI::App& app, command_action& run) {
   cmd->add_option("--network", cli->network,
                   "Judge every node of this network file (TOML, docs/network.md) instead of one EDS");
   cmd->add_option("--decode", cli->decode, "Print the decoded conversation of this log as a table, compare nothing");
+  add_verify_live_options(cmd, cli->live);
   add_report_options(cmd, cli->color, cli->format, cli->warning_flags);
   cmd->callback([&run, cli] { run = [cli] { return run_verify(*cli); }; });
 }

@@ -28,6 +28,7 @@ void register_all(CLI::App& app, command_action& run) {
   register_net(app, run);
   register_doc(app, run);
   register_diff(app, run);
+  register_probe(app, run);
   register_completions(app, run);
 }
 

@@ -10,23 +10,6 @@ namespace {
 
 using model::value;
 
-const model::assembly* assembly_of(const model::device& dev, const value& format) {
-  const auto* r = format.as_ref();
-  if (r == nullptr || !r->resolved()) return nullptr;
-  using schema::ref_kind;
-  switch (r->kind) {
-    case ref_kind::assem:
-    case ref_kind::assem_exa:
-    case ref_kind::proxy_assem:
-    case ref_kind::proxied_assem:
-    case ref_kind::proxy_assem_exa:
-    case ref_kind::proxied_assem_exa:
-      return r->target < dev.assemblies.size() ? &dev.assemblies[r->target] : nullptr;
-    default:
-      return nullptr;
-  }
-}
-
 // The number an EPATH segment carries; a [ParamN] placeholder stands for its default.
 std::optional<std::uint64_t> segment_number(const model::device& dev, const model::epath_segment& s) {
   if (!s.placeholder.empty()) return std::nullopt;  // filled in by the tool (`SLOT`)
@@ -45,16 +28,6 @@ std::uint32_t assembly_instance(const model::device& dev, const model::assembly*
     if (s.kind == model::segment_kind::instance || s.kind == model::segment_kind::connection_point)
       return static_cast<std::uint32_t>(segment_number(dev, s).value_or(0));
   return 0;
-}
-
-// Bytes of an assembly: its size field, else the sum of its members' bits.
-std::uint32_t assembly_size(const model::device& dev, const model::assembly* a) {
-  if (a == nullptr) return 0;
-  if (auto n = number_or_param_default(dev, a->size)) return static_cast<std::uint32_t>(*n);
-  std::uint64_t bits = 0;
-  for (const auto& m : a->members)
-    if (auto b = number_or_param_default(dev, m.size)) bits += *b;
-  return static_cast<std::uint32_t>((bits + 7) / 8);
 }
 
 // A size field, else (empty) the size of the format it names.
@@ -96,6 +69,33 @@ void instances_from_path(const model::device& dev, const model::connection& c, e
 }
 
 }  // namespace
+
+const model::assembly* assembly_of(const model::device& dev, const value& format) {
+  const auto* r = format.as_ref();
+  if (r == nullptr || !r->resolved()) return nullptr;
+  using schema::ref_kind;
+  switch (r->kind) {
+    case ref_kind::assem:
+    case ref_kind::assem_exa:
+    case ref_kind::proxy_assem:
+    case ref_kind::proxied_assem:
+    case ref_kind::proxy_assem_exa:
+    case ref_kind::proxied_assem_exa:
+      return r->target < dev.assemblies.size() ? &dev.assemblies[r->target] : nullptr;
+    default:
+      return nullptr;
+  }
+}
+
+// Bytes of an assembly: its size field, else the sum of its members' bits.
+std::uint32_t assembly_size(const model::device& dev, const model::assembly* a) {
+  if (a == nullptr) return 0;
+  if (auto n = number_or_param_default(dev, a->size)) return static_cast<std::uint32_t>(*n);
+  std::uint64_t bits = 0;
+  for (const auto& m : a->members)
+    if (auto b = number_or_param_default(dev, m.size)) bits += *b;
+  return static_cast<std::uint32_t>((bits + 7) / 8);
+}
 
 std::optional<std::uint64_t> number_or_param_default(const model::device& dev, const value& v) {
   if (v.is_integer()) return v.negative ? std::nullopt : std::optional<std::uint64_t>(v.as_uint());

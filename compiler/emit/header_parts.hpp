@@ -16,5 +16,9 @@ inline constexpr std::size_t max_product_name = 32;  // Identity attribute 7
 // The integer a value states, following a ParamN reference to its default;
 // nullopt when neither gives a non-negative integer.
 [[nodiscard]] std::optional<std::uint64_t> number_or_param_default(const model::device& dev, const model::value& v);
+// The assembly a connection's format field names, or null.
+[[nodiscard]] const model::assembly* assembly_of(const model::device& dev, const model::value& format);
+// Bytes of an assembly: its size field, else the sum of its members' bits.
+[[nodiscard]] std::uint32_t assembly_size(const model::device& dev, const model::assembly* a);
 
 }  // namespace edsc::emit

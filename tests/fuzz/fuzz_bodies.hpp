@@ -14,6 +14,10 @@
 #include <nlohmann/json.hpp>
 
 #include "check/check_file.hpp"
+#include "cip/connection_manager.hpp"
+#include "cip/encap.hpp"
+#include "cip/io_frame.hpp"
+#include "cip/message.hpp"
 #include "cst/cst.hpp"
 #include "diff/diff.hpp"
 #include "edit/analyze.hpp"
@@ -293,6 +297,40 @@ inline std::string diff_body(std::string_view input) {
   if (!a->has_syntax_errors() && !diff::compare(*a, *same).differences.empty())
     return "a file differs from an identical copy";
   return {};
+}
+
+// The EtherNet/IP reply decoders on any bytes (what a hostile device may
+// send): no crash, no read out of bounds (the sanitizers watch), every error
+// located inside the input, and what decodes accounts for its bytes.
+inline std::string cip_body(std::string_view input) {
+  const cip::byte_view b(reinterpret_cast<const std::uint8_t*>(input.data()), input.size());
+  constexpr std::size_t base = 24;
+  auto inside = [&](const cip::decode_error& e) { return e.offset >= base && e.offset <= base + b.size(); };
+  std::string broken;
+  auto judge = [&](const char* what, const auto& r) {
+    if (!r.ok() && !inside(r.error()) && broken.empty()) broken = std::string(what) + ": error located outside the input";
+  };
+  if (cip::decode_encap_header(b).ok() && b.size() < cip::encap_header_size)
+    return "a header decoded from fewer than 24 bytes";
+  judge("CPF", cip::decode_cpf(b, base));
+  judge("RegisterSession", cip::decode_register_session(b, base));
+  judge("SendRRData", cip::decode_send_rr_data(b, base));
+  judge("SendUnitData", cip::decode_send_unit_data(b, base));
+  judge("ListIdentity", cip::decode_list_identity(b, base));
+  judge("ListServices", cip::decode_list_services(b, base));
+  judge("Identity", cip::decode_identity_all(b, base));
+  judge("Forward_Open reply", cip::decode_forward_open_ok(b, base));
+  judge("Forward_Close reply", cip::decode_forward_close(b, base));
+  if (const auto r = cip::decode_reply(b, base); r.ok()) {
+    if (4 + 2 * r->additional.size() + r->data.size() != b.size()) return "a reply's parts do not add up to its bytes";
+  } else {
+    judge("reply", r);
+  }
+  for (const bool run_idle : {false, true}) {
+    const auto f = cip::decode_io_frame(b, run_idle);
+    if (f.ok() && f->data.size() > b.size()) return "an I/O frame with more data than bytes";
+  }
+  return broken;
 }
 
 }  // namespace edsc::fuzz

@@ -1,0 +1,14 @@
+#include "cip/bytes.hpp"
+
+#include <fmt/format.h>
+
+namespace edsc::cip {
+
+bool reader::need(std::size_t n, const char* field) {
+  if (failed_) return false;
+  if (b_.size() - pos_ >= n) return true;
+  fail(fmt::format("{} cut short: {} byte{} needed, {} left", field, n, n == 1 ? "" : "s", b_.size() - pos_));
+  return false;
+}
+
+}  // namespace edsc::cip

@@ -1,0 +1,182 @@
+// `edsc probe HOST [--library DIR]`: what a running EtherNet/IP device says
+// about itself, the sizes of its assemblies, and which EDS files of a library
+// describe it (docs/live.md).
+#include <algorithm>
+#include <memory>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "check/check_file.hpp"
+#include "cip/status.hpp"
+#include "driver/choice.hpp"
+#include "driver/commands.hpp"
+#include "driver/output.hpp"
+#include "driver/verify_live.hpp"
+#include "io/collect_inputs.hpp"
+#include "live/plan.hpp"
+#include "live/probe.hpp"
+
+namespace edsc::driver {
+
+namespace {
+
+struct probe_cli {
+  std::string host, library;
+  double timeout_s = 3.0;
+  bool udp = false;
+  std::string format = "text";
+};
+
+// One library file that describes the device's product (vendor, type, code).
+struct library_match {
+  std::string path;
+  unsigned major = 0, minor = 0;
+  live::keying verdict = live::keying::none;
+  std::vector<std::uint32_t> instances;  // assembly instances it names
+  std::string vendor_name;               // its VendName
+};
+
+std::vector<library_match> match_library(const std::string& dir, const cip::identity& id, std::string& problem) {
+  std::vector<library_match> out;
+  const auto inputs = io::collect_inputs({dir});
+  if (!inputs.errors.empty()) problem = inputs.errors.front().message;
+  for (const auto& path : inputs.files) {
+    auto read = io::read_source(path);
+    auto* src = std::get_if<std::unique_ptr<source_file>>(&read);
+    if (src == nullptr) continue;
+    const auto a = analyze(std::move(*src), check_options{});
+    const auto& d = a->dev.identity;
+    auto is = [](const model::value& v, unsigned n) { return v.is_integer() && v.as_uint() == n; };
+    if (!is(d.vend_code, id.vendor) || !is(d.prod_type, id.device_type) || !is(d.prod_code, id.product_code)) continue;
+    library_match m;
+    m.path = path;
+    m.major = d.maj_rev.is_integer() ? static_cast<unsigned>(d.maj_rev.as_uint()) : 0;
+    m.minor = d.min_rev.is_integer() ? static_cast<unsigned>(d.min_rev.as_uint()) : 0;
+    m.verdict = live::keying_verdict(m.major, m.minor, id.major, id.minor);
+    if (d.vend_name.ok()) m.vendor_name = std::string(d.vend_name.text);
+    for (const auto& t : live::plan_assemblies(a->dev)) m.instances.push_back(t.instance);
+    out.push_back(std::move(m));
+  }
+  // Exact first, then compatible, then the others.
+  std::stable_sort(out.begin(), out.end(), [](const auto& x, const auto& y) { return x.verdict < y.verdict; });
+  return out;
+}
+
+std::string render_probe_text(const probe_cli& cli, const live::probe_result& r, const std::vector<library_match>& lib,
+                        const std::string& lib_problem) {
+  const auto& id = r.identity;
+  std::string out = fmt::format("{} ({})\n", cli.host, r.identity_source);
+  // edsc has no vendor table: the name is what a matching EDS file calls it.
+  const auto named = std::find_if(lib.begin(), lib.end(), [](const auto& m) { return !m.vendor_name.empty(); });
+  out += named == lib.end() ? fmt::format("  vendor        {}\n", id.vendor)
+                            : fmt::format("  vendor        {} ({}, as {} names it)\n", id.vendor, named->vendor_name,
+                                          named->path);
+  out += fmt::format("  device type   {}\n", id.device_type);
+  out += fmt::format("  product code  {}\n", id.product_code);
+  out += fmt::format("  revision      {}.{}\n", id.major, id.minor);
+  out += fmt::format("  serial        0x{:08X}\n", id.serial);
+  out += fmt::format("  status        {}\n", cip::describe_identity_status(id.status));
+  out += fmt::format("  product name  \"{}\"\n", id.product_name);
+  if (id.state != 0xFF) out += fmt::format("  state         {}\n", id.state);
+  for (const auto& sv : r.services)
+    out += fmt::format("  service       \"{}\" version {}, capability 0x{:04X}\n", sv.name, sv.version, sv.capability);
+  out += "assemblies (instance: bytes)\n";
+  for (const auto& a : r.assemblies) out += fmt::format("  {:>5}: {}\n", a.instance, a.size);
+  if (r.assemblies.empty()) out += "  none readable\n";
+  if (!r.assemblies_note.empty()) out += fmt::format("  ({})\n", r.assemblies_note);
+  if (!cli.library.empty()) {
+    out += fmt::format("library {}\n", cli.library);
+    for (const auto& m : lib)
+      out += fmt::format("  {:<10}  {}  (revision {}.{})\n", live::to_string(m.verdict), m.path, m.major, m.minor);
+    if (lib.empty()) out += "  no EDS file of this vendor, device type and product code\n";
+    if (!lib_problem.empty()) out += fmt::format("  ({})\n", lib_problem);
+  }
+  return out;
+}
+
+std::string render_probe_json(const probe_cli& cli, const live::probe_result& r, const std::vector<library_match>& lib) {
+  const auto& id = r.identity;
+  nlohmann::ordered_json j;
+  j["host"] = cli.host;
+  j["source"] = r.identity_source;
+  j["identity"] = {{"vendor_id", id.vendor},
+                   {"device_type", id.device_type},
+                   {"product_code", id.product_code},
+                   {"revision", {{"major", id.major}, {"minor", id.minor}}},
+                   {"serial_number", id.serial},
+                   {"status", id.status},
+                   {"status_text", cip::describe_identity_status(id.status)},
+                   {"product_name", id.product_name}};
+  if (id.state != 0xFF) j["identity"]["state"] = id.state;
+  j["services"] = nlohmann::ordered_json::array();
+  for (const auto& sv : r.services)
+    j["services"].push_back({{"name", sv.name}, {"version", sv.version}, {"capability", sv.capability}});
+  j["assemblies"] = nlohmann::ordered_json::array();
+  for (const auto& a : r.assemblies) j["assemblies"].push_back({{"instance", a.instance}, {"size", a.size}});
+  if (!r.assemblies_note.empty()) j["assemblies_note"] = r.assemblies_note;
+  if (!cli.library.empty()) {
+    j["library"] = nlohmann::ordered_json::array();
+    for (const auto& m : lib)
+      j["library"].push_back({{"path", m.path},
+                              {"vendor_name", m.vendor_name},
+                              {"revision", {{"major", m.major}, {"minor", m.minor}}},
+                              {"keying", live::to_string(m.verdict)}});
+  }
+  return j.dump(2) + "\n";
+}
+
+int run_probe(const probe_cli& cli) {
+  const auto to = device_address(cli.host);
+  if (!to) return exit_failure;
+  live::probe_options opt;
+  opt.timeout = timeout_ms(cli.timeout_s);
+  opt.udp = cli.udp;
+  // A first pass learns the identity; the library's instances join the scan.
+  auto r = live::probe(*to, opt);
+  if (auto* e = live::failed(r)) {
+    print_device_error(cli.host, *e);
+    return exit_failure;
+  }
+  auto& result = std::get<live::probe_result>(r);
+  std::vector<library_match> lib;
+  std::string lib_problem;
+  if (!cli.library.empty()) {
+    lib = match_library(cli.library, result.identity, lib_problem);
+    std::vector<std::uint32_t> named;
+    for (const auto& m : lib) named.insert(named.end(), m.instances.begin(), m.instances.end());
+    if (!named.empty() && !result.assemblies_note.empty()) {
+      opt.extra_instances = named;
+      auto again = live::probe(*to, opt);
+      if (auto* e = live::failed(again)) {
+        print_device_error(cli.host, *e);
+        return exit_failure;
+      }
+      result = std::get<live::probe_result>(again);
+    }
+  }
+  const auto text = cli.format == "json" ? render_probe_json(cli, result, lib) : render_probe_text(cli, result, lib, lib_problem);
+  if (!write_all(stdout, text)) return exit_failure;
+  std::fflush(stdout);
+  return exit_ok;
+}
+
+}  // namespace
+
+void register_probe(CLI::App& app, command_action& run) {
+  auto cli = std::make_shared<probe_cli>();
+  auto* cmd = app.add_subcommand(
+      "probe", "Ask a running EtherNet/IP device who it is and how large its assemblies are (docs/live.md)");
+  cmd->add_option("host", cli->host, "The device's address (only this address is contacted)")->required();
+  cmd->add_option("--library", cli->library, "A folder of EDS files: list those that describe the device, with "
+                                             "the keying verdict (exact, compatible, none)")
+      ->type_name("DIR");
+  add_choice(cmd, "--format", cli->format, {"text", "json"}, "Output format: text (the default) or json");
+  cmd->add_option("--timeout", cli->timeout_s, "Seconds to wait for each answer (default 3)")
+      ->check(CLI::Range(0.05, 600.0).description(""))
+      ->type_name("S");
+  cmd->add_flag("--udp", cli->udp, "Ask the identity by UDP ListIdentity (unicast) instead of TCP");
+  cmd->callback([&run, cli] { run = [cli] { return run_probe(*cli); }; });
+}
+
+}  // namespace edsc::driver

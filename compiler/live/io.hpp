@@ -1,0 +1,40 @@
+#pragma once
+// One connection's life: Forward_Open as planned, class 1 I/O on UDP 2222
+// for a short window (T->O received and measured; O->T sent at the RPI with
+// the idle header, so outputs stay in their idle state), Forward_Close.
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "live/plan.hpp"
+#include "live/session.hpp"
+
+namespace edsc::live {
+
+struct io_stats {
+  unsigned frames = 0;          // T->O frames of this connection
+  unsigned wrong_size = 0;      // frames whose data size is not the EDS's
+  std::size_t a_wrong_size = 0; // one such size
+  unsigned without_header = 0;  // frames lacking the run/idle header the format asks for
+  unsigned undecodable = 0;
+  unsigned sent = 0;            // O->T frames sent
+  double mean_interval_us = 0;  // between T->O frames
+};
+
+struct connection_outcome {
+  bool opened = false;
+  std::uint8_t general = 0;               // refusal status
+  std::vector<std::uint16_t> additional;
+  cip::forward_open_reply granted;
+  io_stats io;
+  std::string close_problem;  // Forward_Close refused or unanswered
+};
+
+// A network failure (the device stops answering) is the error; a refusal is
+// an outcome.
+[[nodiscard]] result<connection_outcome> exercise_connection(session& s, const connection_plan& plan,
+                                                             std::uint16_t serial, std::chrono::milliseconds window);
+
+}  // namespace edsc::live

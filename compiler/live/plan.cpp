@@ -1,0 +1,215 @@
+#include "live/plan.hpp"
+
+#include <fmt/format.h>
+
+#include "cip/message.hpp"
+#include "emit/header_parts.hpp"
+
+namespace edsc::live {
+
+namespace {
+
+using model::segment_kind;
+
+std::optional<std::uint32_t> segment_value(const model::device& dev, const model::epath_segment& s) {
+  if (!s.placeholder.empty()) return std::nullopt;
+  if (!s.has_param) return s.value;
+  if (!s.param.resolved() || s.param.target >= dev.params.size()) return std::nullopt;
+  const auto& d = dev.params[s.param.target].default_value;
+  if (d.is_integer() && !d.negative) return static_cast<std::uint32_t>(d.as_uint());
+  return std::nullopt;
+}
+
+// A logical segment in the width the EDS wrote it (8, 16 or 32 bits).
+void put_segment(cip::bytes& out, std::uint8_t type8, std::uint8_t width, std::uint32_t v) {
+  if (width == 8 && v <= 0xFF) {
+    cip::put_u8(out, type8);
+    cip::put_u8(out, static_cast<std::uint8_t>(v));
+  } else if (width <= 16 && v <= 0xFFFF) {
+    cip::put_u8(out, static_cast<std::uint8_t>(type8 | 1));
+    cip::put_u8(out, 0);
+    cip::put_u16(out, static_cast<std::uint16_t>(v));
+  } else {
+    cip::put_u8(out, static_cast<std::uint8_t>(type8 | 2));
+    cip::put_u8(out, 0);
+    cip::put_u32(out, v);
+  }
+}
+
+// The EDS path as bytes, [ParamN] placeholders replaced by their defaults;
+// an error when a segment cannot be sent as the EDS means it.
+std::optional<std::string> encode_path(const model::device& dev, const model::epath& p, cip::bytes& out) {
+  if (p.symbolic) return "the path is a tag name the user picks (SYMBOL_ANSI)";
+  if (!p.complete) return "the path ends inside a segment";
+  for (const auto& s : p.segments) {
+    const auto v = segment_value(dev, s);
+    if (!v && s.kind != segment_kind::symbol) return "a segment's value is left to the configuration tool";
+    switch (s.kind) {
+      case segment_kind::port:
+        if (*v > 14 || s.link_address > 0xFF) return "a port segment edsc does not encode";
+        cip::put_u8(out, static_cast<std::uint8_t>(*v));
+        cip::put_u8(out, static_cast<std::uint8_t>(s.link_address));
+        break;
+      case segment_kind::class_id: put_segment(out, 0x20, s.width, *v); break;
+      case segment_kind::instance: put_segment(out, 0x24, s.width, *v); break;
+      case segment_kind::member: put_segment(out, 0x28, s.width, *v); break;
+      case segment_kind::connection_point: put_segment(out, 0x2C, s.width, *v); break;
+      case segment_kind::attribute: put_segment(out, 0x30, s.width, *v); break;
+      case segment_kind::symbol:
+        cip::put_u8(out, 0x91);
+        cip::put_u8(out, static_cast<std::uint8_t>(s.symbol.size()));
+        for (const char c : s.symbol) cip::put_u8(out, static_cast<std::uint8_t>(c));
+        if (s.symbol.size() % 2) cip::put_u8(out, 0);
+        break;
+      default: return "a segment edsc does not encode";
+    }
+  }
+  return std::nullopt;
+}
+
+// The configuration a scanner sends by default: each member parameter's
+// default, little-endian, where members are whole bytes; zeros elsewhere.
+cip::bytes config_data(const model::device& dev, const model::assembly* a, std::uint32_t size) {
+  cip::bytes out(size, 0);
+  if (a == nullptr) return out;
+  std::size_t at = 0;
+  for (const auto& m : a->members) {
+    const auto bits = emit::number_or_param_default(dev, m.size).value_or(0);
+    if (bits % 8 != 0) return cip::bytes(size, 0);
+    const auto* r = m.ref.as_ref();
+    std::uint64_t v = 0;
+    if (r != nullptr && r->kind == schema::ref_kind::param && r->resolved() && r->target < dev.params.size()) {
+      const auto& d = dev.params[r->target].default_value;
+      if (d.is_integer()) v = static_cast<std::uint64_t>(d.as_int());
+    }
+    // Bytes past the 8 of a 64-bit default are zero (a shift by 64 or more is undefined).
+    for (std::uint64_t i = 0; i < bits / 8 && at < out.size(); ++i, ++at)
+      out[at] = i < 8 ? static_cast<std::uint8_t>(v >> (8 * i)) : 0;
+  }
+  return out;
+}
+
+cip::conn_type pick_type(const model::direction_params& d, bool prefer_multicast) {
+  if (prefer_multicast && d.type_multicast) return cip::conn_type::multicast;
+  if (d.type_p2p) return cip::conn_type::point_to_point;
+  if (d.type_multicast) return cip::conn_type::multicast;
+  return cip::conn_type::null;
+}
+
+cip::conn_priority pick_priority(const model::direction_params& d) {
+  if (d.prio_scheduled) return cip::conn_priority::scheduled;
+  if (d.prio_high) return cip::conn_priority::high;
+  return cip::conn_priority::low;
+}
+
+}  // namespace
+
+std::uint16_t network_size(std::uint32_t data, bool run_idle) {
+  return static_cast<std::uint16_t>(data + 2 + (run_idle && data > 0 ? 4 : 0));
+}
+
+std::optional<cip::electronic_key> key_from_device(const model::device& dev) {
+  const auto& id = dev.identity;
+  for (const auto* v : {&id.vend_code, &id.prod_type, &id.prod_code, &id.maj_rev, &id.min_rev})
+    if (!v->is_integer()) return std::nullopt;
+  cip::electronic_key k;
+  k.vendor = static_cast<std::uint16_t>(id.vend_code.as_uint());
+  k.device_type = static_cast<std::uint16_t>(id.prod_type.as_uint());
+  k.product_code = static_cast<std::uint16_t>(id.prod_code.as_uint());
+  k.major = static_cast<std::uint8_t>(id.maj_rev.as_uint());
+  k.minor = static_cast<std::uint8_t>(id.min_rev.as_uint());
+  k.compatible = true;  // what configuration tools default to
+  return k;
+}
+
+std::vector<connection_plan> plan_connections(const model::device& dev) {
+  std::vector<emit::header_issue> issues;
+  const auto facts = emit::collect_connections(dev, issues);
+  const auto key = key_from_device(dev);
+  std::vector<connection_plan> out;
+  for (const auto& f : facts) {
+    connection_plan p;
+    p.facts = f;
+    for (const auto& c : dev.connections)
+      if (c.number == f.number) {
+        p.conn = &c;
+        break;
+      }
+    if (p.conn == nullptr) continue;
+    const auto& c = *p.conn;
+    if (!c.decoded) {
+      p.not_openable = "its trigger/transport or parameters field is not a number";
+      out.push_back(std::move(p));
+      continue;
+    }
+    p.listen_only = c.tt.listen_only && !c.tt.exclusive_owner && !c.tt.input_only;
+    p.ot_run_idle = f.output_format == 4;
+    p.to_run_idle = f.input_format == 4;
+    p.ot_rpi_us = static_cast<std::uint32_t>(emit::number_or_param_default(dev, c.ot_rpi).value_or(0));
+    p.to_rpi_us = static_cast<std::uint32_t>(emit::number_or_param_default(dev, c.to_rpi).value_or(0));
+    if (p.to_rpi_us == 0) p.to_rpi_us = p.ot_rpi_us;
+    if (p.ot_rpi_us == 0) p.ot_rpi_us = p.to_rpi_us;
+    if (!(c.tt.transport_classes & 0x2)) p.not_openable = "it is not a class 1 connection";
+    else if (p.ot_rpi_us == 0) p.not_openable = "it gives no RPI (neither a number nor a parameter default)";
+    else if (p.listen_only) p.not_openable = "a listen-only connection needs an owner connection that edsc does not hold";
+    const auto* path = dev.path_of(c.path);
+    if (p.not_openable.empty() && path == nullptr) p.not_openable = "it has no connection path";
+    if (p.not_openable.empty())
+      if (auto why = encode_path(dev, *path, p.app_path)) p.not_openable = *why;
+
+    auto& fo = p.request;
+    fo.ot_rpi_us = p.ot_rpi_us;
+    fo.to_rpi_us = p.to_rpi_us;
+    fo.ot.type = pick_type(c.cp.ot, false);
+    fo.to.type = pick_type(c.cp.to, false);  // point-to-point where allowed: no multicast routing needed
+    fo.ot.priority = pick_priority(c.cp.ot);
+    fo.to.priority = pick_priority(c.cp.to);
+    fo.ot.variable = !c.cp.ot.fixed && c.cp.ot.variable;
+    fo.to.variable = !c.cp.to.fixed && c.cp.to.variable;
+    fo.ot.size = fo.ot.type == cip::conn_type::null ? 0 : network_size(f.output_size, p.ot_run_idle);
+    fo.to.size = fo.to.type == cip::conn_type::null ? 0 : network_size(f.input_size, p.to_run_idle);
+    fo.large = fo.ot.size > 511 || fo.to.size > 511;
+    const std::uint8_t trigger = c.tt.trigger_cyclic ? 0 : c.tt.trigger_cos ? 1 : 2;
+    fo.transport = static_cast<std::uint8_t>((trigger << 4) | 0x01);
+    if (key) cip::put_key(fo.path, *key);
+    cip::put_bytes(fo.path, p.app_path);
+    if (f.config_size > 0 && f.config_instance != 0)
+      cip::put_data_segment(fo.path, config_data(dev, emit::assembly_of(dev, c.target_config_format), f.config_size));
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
+std::vector<assembly_target> plan_assemblies(const model::device& dev) {
+  std::vector<assembly_target> out;
+  auto add = [&](const model::assembly* a, std::uint32_t instance) {
+    if (a == nullptr || instance == 0) return;
+    for (const auto& t : out)
+      if (t.assem == a) return;
+    out.push_back({a, instance, emit::assembly_size(dev, a)});
+  };
+  for (const auto& a : dev.assemblies) {
+    if (a.kind != model::assembly_kind::assem) continue;
+    const auto* p = dev.path_of(a.path);
+    if (p == nullptr) continue;
+    std::optional<std::uint32_t> cls, inst;
+    for (const auto& s : p->segments) {
+      if (s.kind == segment_kind::class_id) cls = segment_value(dev, s);
+      if ((s.kind == segment_kind::instance || s.kind == segment_kind::connection_point) && !inst)
+        inst = segment_value(dev, s);
+    }
+    if (cls == 4u && inst) add(&a, *inst);
+  }
+  std::vector<emit::header_issue> issues;
+  for (const auto& f : emit::collect_connections(dev, issues))
+    for (const auto& c : dev.connections) {
+      if (c.number != f.number) continue;
+      add(emit::assembly_of(dev, c.ot_format), f.output_instance);
+      add(emit::assembly_of(dev, c.to_format), f.input_instance);
+      add(emit::assembly_of(dev, c.target_config_format), f.config_instance);
+      break;
+    }
+  return out;
+}
+
+}  // namespace edsc::live

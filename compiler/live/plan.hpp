@@ -1,0 +1,46 @@
+#pragma once
+// What a scanner configured from the EDS sends: the Forward_Open of each
+// ConnectionN (paths, sizes with their header bytes, transport, RPI, the
+// electronic key from [Device], the configuration data) and the assembly
+// instances whose sizes can be read. Built from the typed model; the sizes
+// and instances come from the same collector `edsc header` uses.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cip/connection_manager.hpp"
+#include "emit/header_view.hpp"
+#include "model/device.hpp"
+
+namespace edsc::live {
+
+struct connection_plan {
+  const model::connection* conn = nullptr;
+  emit::eip_connection_facts facts;
+  std::uint32_t ot_rpi_us = 0, to_rpi_us = 0;
+  bool ot_run_idle = false, to_run_idle = false;
+  bool listen_only = false;
+  cip::forward_open_request request;  // serials left to the caller
+  cip::bytes app_path;                // without key and data (for Forward_Close)
+  std::string not_openable;           // why edsc does not open it; empty: it does
+};
+
+// The key a scanner builds from [Device]; nullopt when a field is missing.
+[[nodiscard]] std::optional<cip::electronic_key> key_from_device(const model::device& dev);
+[[nodiscard]] std::vector<connection_plan> plan_connections(const model::device& dev);
+
+// An assembly whose instance is known: from its own class 4 path, or from a
+// connection path whose size/format fields name it.
+struct assembly_target {
+  const model::assembly* assem = nullptr;
+  std::uint32_t instance = 0;
+  std::uint32_t eds_size = 0;  // bytes
+};
+[[nodiscard]] std::vector<assembly_target> plan_assemblies(const model::device& dev);
+
+// The data size plus the 16-bit sequence count and, where the format has
+// one, the 32-bit run/idle header (as OpENer counts them, cipioconnection.c).
+[[nodiscard]] std::uint16_t network_size(std::uint32_t data, bool run_idle);
+
+}  // namespace edsc::live

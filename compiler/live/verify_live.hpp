@@ -1,0 +1,42 @@
+#pragma once
+// `edsc verify --live`: a running EtherNet/IP device compared with its EDS.
+// Findings are diagnostics located at the EDS field that disagrees; each
+// check also gets a row of the summary table.
+#include <chrono>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "diag/diagnostic.hpp"
+#include "live/socket.hpp"
+#include "model/device.hpp"
+
+namespace edsc::live {
+
+struct live_options {
+  std::chrono::milliseconds timeout{3000};
+  bool connections = false;                 // open every ConnectionN (never the default)
+  std::chrono::milliseconds io_window{0};   // 0: ten RPIs, at least 300 ms
+};
+
+enum class verdict { match, mismatch, not_readable, not_tried };
+[[nodiscard]] std::string_view to_string(verdict v);
+
+struct check_row {
+  std::string check;  // "ProdCode", "Assem100 size", "Connection1"
+  std::string eds, device;
+  verdict result = verdict::not_tried;
+};
+
+struct live_report {
+  diagnostics diags;
+  std::vector<check_row> rows;
+  std::optional<net_error> failure;  // the device could not be talked to: exit 2
+};
+
+[[nodiscard]] live_report verify_live(const endpoint& device, const model::device& dev, const live_options& opt);
+
+// The summary table: check, EDS, device, result.
+[[nodiscard]] std::string render_rows(const std::vector<check_row>& rows);
+
+}  // namespace edsc::live

@@ -1,0 +1,120 @@
+// A device that accepts every connection but produces frames that are wrong:
+// 16 data bytes where the EDS says 32, every 50 ms where it granted 10 ms.
+// OpENer never does this (it checks sizes at Forward_Open), so a loopback
+// stand-in shows that edsc judges the frames themselves (live-io-frames,
+// live-io-rate). The stand-in answers only what verify --live asks.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <thread>
+
+#include "cip/encap.hpp"
+#include "cip/io_frame.hpp"
+#include "live_support.hpp"
+#include "loopback_server.hpp"
+#include "run_edsc.hpp"
+
+namespace edsc::live_test {
+namespace {
+
+// Sends T->O frames of 16 bytes to 127.0.0.1:2222 every 50 ms while `on`.
+class frame_sender {
+ public:
+  explicit frame_sender(std::uint32_t connection_id) : id_(connection_id) {
+    thread_ = std::thread([this] { run(); });
+  }
+  ~frame_sender() {
+    on_ = false;
+    thread_.join();
+  }
+
+ private:
+  void run() {
+    const int s = ::socket(AF_INET, SOCK_DGRAM, 0);
+    sockaddr_in to{};
+    to.sin_family = AF_INET;
+    to.sin_port = htons(2222);
+    to.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    std::uint32_t n = 0;
+    while (on_) {
+      cip::io_frame f{id_, ++n, static_cast<std::uint16_t>(n), std::nullopt, cip::bytes(16, 0xAB)};
+      const auto b = cip::encode_io_frame(f);
+      ::sendto(s, b.data(), b.size(), 0, reinterpret_cast<sockaddr*>(&to), sizeof to);
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    ::close(s);
+  }
+  std::uint32_t id_;
+  std::atomic<bool> on_{true};
+  std::thread thread_;
+};
+
+cip::bytes cip_reply(std::uint8_t service, const cip::bytes& data, std::uint8_t general = 0) {
+  cip::bytes r;
+  cip::put_u8(r, static_cast<std::uint8_t>(service | 0x80));
+  cip::put_u8(r, 0);
+  cip::put_u8(r, general);
+  cip::put_u8(r, 0);
+  for (const auto c : data) r.push_back(c);  // (put_bytes trips GCC 12's -Wstringop-overread on {} here)
+  return r;
+}
+
+// One client's requests, answered as OpENer would, but for the frames.
+void fake_device(int s, const std::atomic<bool>& stop) {
+  std::unique_ptr<frame_sender> sender;
+  std::uint32_t next_id = 0x22220001;
+  for (;;) {
+    const auto req = read_message(s, stop);
+    if (req.size() < cip::encap_header_size) return;
+    const auto command = static_cast<std::uint16_t>(req[0] | (req[1] << 8));
+    if (command == 0x0065) {
+      send_bytes(s, reply_to(req, 0x0065, 0x1234, {1, 0, 0, 0}));
+      continue;
+    }
+    if (command != 0x006F || req.size() < 24 + 16 + 2) return;
+    // SendRRData: handle, timeout, 2 items, null address, unconnected data header, then the request.
+    const cip::bytes request(req.begin() + 24 + 16, req.end());
+    const auto service = request[0];
+    const std::size_t data_at = 2 + 2u * request[1];
+    cip::bytes answer;
+    if (service == 0x01) {  // Identity attributes 1-7 of OpENer
+      answer = cip_reply(service, unhex("01 00 0C 00 E9 FD 02 03 30 00 15 CD 5B 07 09 4F 70 45 4E 65 72 20 50 43"));
+    } else if (service == 0x0E && request.size() >= 6) {  // Assembly attribute 4
+      const auto instance = request[5];
+      const std::uint8_t size = instance == 151 ? 10 : 32;
+      answer = cip_reply(service, {size, 0});
+    } else if (service == 0x54 && request.size() >= data_at + 18) {  // Forward_Open: granted, API 10 ms
+      cip::bytes d;
+      cip::put_u32(d, next_id + 0x100);
+      cip::put_u32(d, next_id);
+      d.insert(d.end(), request.begin() + static_cast<long>(data_at) + 10, request.begin() + static_cast<long>(data_at) + 18);
+      cip::put_u32(d, 10000);
+      cip::put_u32(d, 10000);
+      cip::put_u16(d, 0);
+      sender = std::make_unique<frame_sender>(next_id++);
+      answer = cip_reply(service, d);
+    } else if (service == 0x4E && request.size() >= data_at + 10) {  // Forward_Close
+      sender.reset();
+      cip::bytes d(request.begin() + static_cast<long>(data_at) + 2, request.begin() + static_cast<long>(data_at) + 10);
+      cip::put_u16(d, 0);
+      answer = cip_reply(service, d);
+    } else {
+      answer = cip_reply(service, {}, 0x08);  // service not supported
+    }
+    send_bytes(s, reply_to(req, 0x006F, 0x1234, cip::send_rr_data(answer, 0)));
+  }
+}
+
+TEST(live_fake_device, wrong_frames_are_found_at_the_connection) {
+  loopback_server device(fake_device);
+  const auto eds = std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds";
+  const auto r = run_edsc("verify --live " + device.address() + " " + quoted(eds) + " --connections --color never");
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find("T->O frames carry 16 data bytes, the EDS says 32 [live-io-frames]"), std::string::npos)
+      << r.output;
+  // 50 ms between frames against 10 ms granted: slower than twice the interval, however slow this host is.
+  EXPECT_NE(r.output.find("ms granted [live-io-rate]"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace edsc::live_test

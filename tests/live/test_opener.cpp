@@ -1,0 +1,209 @@
+// edsc against a real device: OpENer (../shared/opener) in its own network
+// namespace. Its own EDS passes `verify --live --connections`; faults made
+// with `edsc edit` on a copy are reported at the edited line with the
+// device's status; a capture of the session decodes cleanly in tshark.
+#include <gtest/gtest.h>
+
+#include <signal.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "run_edsc.hpp"
+#include "test_network.hpp"
+
+namespace edsc::live_test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string opener_eds = std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds";
+
+class live_opener : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string why;
+    net_ = test_network::make(why);
+    if (!net_) GTEST_SKIP() << why;
+    if (!fs::exists(EDSC_OPENER_BINARY)) GTEST_SKIP() << "OpENer was not built (" << EDSC_OPENER_BINARY << ")";
+    ASSERT_TRUE(net_->start_opener(EDSC_OPENER_BINARY, why)) << why;
+  }
+  [[nodiscard]] std::string device() const { return net_->device_ip; }
+  // A copy of OpENer's EDS in the test's folder, edited by `edsc edit`.
+  std::string faulty_copy(const std::string& set) {
+    const auto path = net_->dir + "/faulty.eds";
+    fs::copy_file(opener_eds, path, fs::copy_options::overwrite_existing);
+    const auto r = run_edsc("edit " + quoted(path) + " --in-place --force --set " + quoted(set));
+    EXPECT_EQ(r.status, 0) << r.output;
+    return path;
+  }
+  std::unique_ptr<test_network> net_;
+};
+
+// The 1-based line of the first line of `path` holding `needle` after line `from`.
+unsigned line_of(const std::string& path, const std::string& needle, const std::string& after = {}) {
+  std::ifstream in(path);
+  std::string line;
+  unsigned n = 0;
+  bool armed = after.empty();
+  while (std::getline(in, line)) {
+    ++n;
+    if (!armed && line.find(after) != std::string::npos) armed = true;
+    if (armed && line.find(needle) != std::string::npos) return n;
+  }
+  return 0;
+}
+
+TEST_F(live_opener, its_own_eds_passes_with_every_connection_opened) {
+  const auto r = run_edsc("verify --live " + device() + " " + quoted(opener_eds) + " --connections --color never");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("0 errors"), std::string::npos) << r.output;
+  // Connection1 (exclusive owner) and 2 (input only) open and deliver 32-byte frames.
+  for (const auto* c : {"Connection1 ", "Connection2 "}) {
+    const auto at = r.output.find(std::string("\n") + c);
+    ASSERT_NE(at, std::string::npos) << r.output;
+    const auto row = r.output.substr(at + 1, r.output.find('\n', at + 1) - at - 1);
+    EXPECT_NE(row.find("open; "), std::string::npos) << row;
+    EXPECT_NE(row.find("frames of 32 B"), std::string::npos) << row;
+    EXPECT_EQ(row.find("open; 0 frames"), std::string::npos) << row;
+    EXPECT_TRUE(row.ends_with("match")) << row;
+  }
+  for (const auto* a : {"\nAssem100 size (instance 100) ", "\nAssem150 size (instance 150) ", "\nAssem151 size (instance 151) "}) {
+    const auto at = r.output.find(a);
+    ASSERT_NE(at, std::string::npos) << a << r.output;
+    const auto row = r.output.substr(at + 1, r.output.find('\n', at + 1) - at - 1);
+    EXPECT_TRUE(row.ends_with(" match")) << row;
+  }
+  std::printf("verify --live --connections against OpENer: %.2f s\n", r.seconds);
+  const auto quick = run_edsc("verify --live " + device() + " " + quoted(opener_eds) + " --color never");
+  EXPECT_EQ(quick.status, 0) << quick.output;
+  EXPECT_NE(quick.output.find("--connections not given"), std::string::npos) << quick.output;
+  std::printf("verify --live against OpENer: %.2f s\n", quick.seconds);
+}
+
+TEST_F(live_opener, probe_reads_identity_assemblies_and_matches_the_library) {
+  const auto lib = net_->dir + "/library";
+  fs::create_directories(lib);
+  fs::copy_file(opener_eds, lib + "/opener.eds");
+  const auto r = run_edsc("probe " + device() + " --library " + quoted(lib) + " --format json");
+  ASSERT_EQ(r.status, 0) << r.output;
+  std::printf("probe --library against OpENer: %.2f s\n", r.seconds);
+  const auto j = nlohmann::json::parse(r.output, nullptr, false);
+  ASSERT_FALSE(j.is_discarded()) << r.output;
+  EXPECT_EQ(j["identity"]["vendor_id"], 1);
+  EXPECT_EQ(j["identity"]["device_type"], 12);
+  EXPECT_EQ(j["identity"]["product_code"], 65001);
+  EXPECT_EQ(j["identity"]["revision"]["major"], 2);
+  EXPECT_EQ(j["identity"]["serial_number"], 123456789);
+  EXPECT_EQ(j["identity"]["product_name"], "OpENer PC");
+  std::map<int, int> sizes;
+  for (const auto& a : j["assemblies"]) sizes[a["instance"]] = a["size"];
+  EXPECT_EQ(sizes[100], 32);
+  EXPECT_EQ(sizes[150], 32);
+  EXPECT_EQ(sizes[151], 10);
+  ASSERT_EQ(j["library"].size(), 1u);
+  EXPECT_EQ(j["library"][0]["keying"], "exact");
+  const auto text = run_edsc("probe " + device() + " --udp --timeout 5");
+  EXPECT_EQ(text.status, 0) << text.output;
+  EXPECT_NE(text.output.find("product name  \"OpENer PC\""), std::string::npos) << text.output;
+  EXPECT_NE(text.output.find("service       \"Communications\""), std::string::npos) << text.output;
+}
+
+struct fault {
+  const char* name;
+  const char* set;     // the edit
+  const char* needle;  // text of the edited line
+  const char* after;   // the line is after the first line holding this
+  const char* expect;  // in the diagnostic
+  int status = 1;      // edsc's exit status: 1 errors, 0 warnings only
+};
+
+// Named in test listings by its name, not by its bytes (which hold pointers).
+void PrintTo(const fault& f, std::ostream* os) { *os << f.name; }
+
+class live_opener_fault : public live_opener, public ::testing::WithParamInterface<fault> {};
+
+TEST_P(live_opener_fault, is_reported_at_the_edited_line_with_the_device_status) {
+  const auto& f = GetParam();
+  const auto path = faulty_copy(f.set);
+  const auto line = line_of(path, f.needle, f.after);
+  ASSERT_NE(line, 0u) << f.needle;
+  const auto r = run_edsc("verify --live " + device() + " " + quoted(path) + " --connections --color never");
+  EXPECT_EQ(r.status, f.status) << r.output;
+  const auto where = path + ":" + std::to_string(line) + ":";
+  bool found = false;
+  for (std::size_t at = r.output.find(where); at != std::string::npos; at = r.output.find(where, at + 1)) {
+    const auto msg = r.output.substr(at, r.output.find('\n', at) - at);
+    found = found || msg.find(f.expect) != std::string::npos;
+  }
+  EXPECT_TRUE(found) << "expected \"" << f.expect << "\" at " << where << "\n" << r.output;
+}
+
+const fault faults[] = {
+    {"wrong_product_code", "Device.ProdCode=65002", "ProdCode = 65002", "", "0x0114"},
+    {"wrong_major_revision", "Device.MajRev=3", "MajRev = 3", "", "0x0116"},
+    {"ot_size_33", "Connection Manager.Connection1.ot_size=33", "Param4,33,Assem150", "Connection1",
+     "extended 0x0127 invalid O->T size (additional 0x0026): the device accepts 38 bytes O->T, the EDS says 39"},
+    {"to_size_16", "Connection Manager.Connection1.to_size=16", "Param4,16,Assem100", "Connection1",
+     "extended 0x0128 invalid T->O size (additional 0x0022): the device accepts 34 bytes T->O, the EDS says 18"},
+    {"wrong_instance_in_path", "Connection Manager.Connection1.path=\"20 04 24 97 2C 96 2C 65\"",
+     "2C 96 2C 65", "Connection1", "0x012F"},
+    {"config_size_refused", "Connection Manager.Connection1.target_config_size=12", ",,12", "Connection1",
+     "refused the 12 bytes of configuration"},
+    {"assembly_size", "Assembly.Assem100.size=16", "16,", "Assem100", "holds 32 bytes on the device, Assem100 says 16"},
+    {"minor_revision_newer", "Device.MinRev=4", "MinRev = 4", "", "compatible keying refuses it too"},
+    {"minor_revision_refused", "Device.MinRev=4", "MinRev = 4", "", "0x0116 revision mismatch"},
+    {"minor_revision_older", "Device.MinRev=1", "MinRev = 1", "", "compatible keying accepts it", 0},
+    {"product_name", "Device.ProdName=\"OpENer\"", "ProdName = \"OpENer\"", "", "product name \"OpENer PC\"", 0},
+};
+
+INSTANTIATE_TEST_SUITE_P(faults, live_opener_fault, ::testing::ValuesIn(faults),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+// The identity fields as tshark prints them (-T fields, separator ",").
+std::string tshark_identity(const nlohmann::json& i) {
+  char serial[16], vendor[8];
+  std::snprintf(serial, sizeof serial, "0x%08x", i["serial_number"].get<unsigned>());
+  std::snprintf(vendor, sizeof vendor, "0x%04x", i["vendor_id"].get<unsigned>());
+  return std::string(vendor) + "," + std::to_string(i["device_type"].get<int>()) + "," +
+         std::to_string(i["product_code"].get<int>()) + "," + serial + "," + i["product_name"].get<std::string>() + "\n";
+}
+
+TEST_F(live_opener, a_captured_session_decodes_in_tshark_with_the_same_identity) {
+  if (shell("command -v tcpdump >/dev/null && command -v tshark >/dev/null").status != 0)
+    GTEST_SKIP() << "tcpdump or tshark is missing (Debian packages tcpdump, tshark)";
+  const auto pcap = net_->dir + "/session.pcap";
+  const auto dump = net_->spawn({"tcpdump", "-i", net_->dev_if, "--immediate-mode", "-U", "-n", "-w", pcap}, "tcpdump.log");
+  ASSERT_GT(dump, 0);
+  for (int i = 0; i < 200 && shell("grep -q listening " + net_->dir + "/tcpdump.log").status != 0; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  const auto probe = run_edsc("probe " + device() + " --udp --timeout 5 --format json");
+  ASSERT_EQ(probe.status, 0) << probe.output;
+  const auto verify = run_edsc("verify --live " + device() + " " + quoted(opener_eds) + " --connections");
+  EXPECT_EQ(verify.status, 0) << verify.output;
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  net_->stop(dump, SIGINT);
+  const auto base = "tshark -r " + quoted(pcap) + " -d udp.port==2222,cipio ";
+  const auto all = shell(base + "2>/dev/null | wc -l");
+  EXPECT_GT(std::stoi(all.out), 20) << "too few packets captured; tcpdump said: "
+                                    << shell("cat " + net_->dir + "/tcpdump.log").out;
+  const auto malformed = shell(base + "-Y '_ws.malformed || _ws.expert.severity >= error' 2>/dev/null");
+  EXPECT_EQ(malformed.out, "") << malformed.out;
+  const auto j = nlohmann::json::parse(probe.output, nullptr, false);
+  ASSERT_FALSE(j.is_discarded());
+  const auto id = shell(base + "-Y enip.lir.name -T fields -E separator=, -e enip.lir.vendor -e enip.lir.devtype "
+                               "-e enip.lir.prodcode -e enip.lir.serial -e enip.lir.name 2>/dev/null");
+  const auto& i = j["identity"];
+  EXPECT_EQ(id.out, tshark_identity(i)) << id.out;
+  // Frames of Connection1 went both ways on UDP 2222.
+  const auto io = shell(base + "-Y 'udp.port==2222 && enip.cpf.sai.connid' 2>/dev/null | wc -l");
+  EXPECT_GT(std::stoi(io.out), 4) << io.out;
+}
+
+}  // namespace
+}  // namespace edsc::live_test
