@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Runs `edsc dump --json` on every corpus file and validates the output
-against docs/dump-json.schema.json. Usage: validate_dump.py EDSC SCHEMA CORPUS_DIR..."""
+against docs/dump-json.schema.json; under the sanitizers on a fixed sample
+(tests/corpus_sample.py). Usage: validate_dump.py [--sample N] EDSC SCHEMA CORPUS_DIR..."""
 import json
 import pathlib
 import subprocess
@@ -8,16 +9,21 @@ import sys
 
 import jsonschema
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+from corpus_sample import pop_sample_arg, sample  # noqa: E402
+
 
 def main() -> int:
-    edsc, schema_path = sys.argv[1], pathlib.Path(sys.argv[2])
-    corpora = [pathlib.Path(a) for a in sys.argv[3:]]
+    argv = sys.argv[1:]
+    stride = pop_sample_arg(argv)
+    edsc, schema_path = argv[0], pathlib.Path(argv[1])
+    corpora = [pathlib.Path(a) for a in argv[2:]]
     schema = json.loads(schema_path.read_text())
     jsonschema.Draft202012Validator.check_schema(schema)
     validator = jsonschema.Draft202012Validator(schema)
     files = []
     for corpus in corpora:
-        here = sorted(corpus.glob("*.eds"))
+        here = sample(corpus, stride)
         if not here:
             print(f"no .eds files in {corpus}")
             return 1
