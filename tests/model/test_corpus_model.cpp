@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "corpus_dirs.hpp"
+#include "golden.hpp"
 #include "emit/emit_json.hpp"
 #include "model_support.hpp"
 
@@ -148,7 +149,7 @@ TEST_P(GoldenDump, MatchesCheckedInJson) {
   diagnostics diags;
   const auto dev = lower(parsed.tree, diags);
   const std::string out = emit::to_json(dev, *src).dump(1) + "\n";
-  if (std::getenv("EDSC_UPDATE_GOLDEN")) {
+  if (edsc::test::update_golden()) {
     std::ofstream(golden, std::ios::binary) << out;
     GTEST_SKIP() << "golden rewritten: " << golden;
   }
