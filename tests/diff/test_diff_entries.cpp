@@ -10,26 +10,11 @@ using edsc::diff::group;
 
 namespace {
 
-const std::string base = R"([File]
-        DescText = "entries";
-        CreateDate = 01-15-2024;
-        CreateTime = 10:30:00;
-        Revision = 1.0;
-[Device]
-        VendCode = 65535;
-        VendName = "edsc tests";
-        ProdType = 12;
-        ProdTypeStr = "Communications Adapter";
-        ProdCode = 7;
-        MajRev = 2;
-        MinRev = 3;
-        ProdName = "Entries";
-[Device Classification]
-        Class1 = EtherNetIP;
-[Capacity]
-        MaxIOConnections = 4;
-        MaxMsgConnections = 6;
-)";
+// The tests' device with a [Capacity] section.
+const std::string base = device_eds +
+                         "[Capacity]\n"
+                         "        MaxIOConnections = 4;\n"
+                         "        MaxMsgConnections = 6;\n";
 
 // The one difference of `before` -> `after`.
 difference only(const std::string& before, const std::string& after) {
@@ -67,11 +52,11 @@ TEST(DiffEntries, CapacityLimitLoweredIsBreakingRaisedIsAdditive) {
 }
 
 TEST(DiffEntries, DescriptiveTextIsCosmetic) {
-  auto d = only(base, replaced(base, "DescText = \"entries\";", "DescText = \"other\";"));
+  auto d = only(base, replaced(base, "DescText = \"diff test device\";", "DescText = \"other\";"));
   EXPECT_EQ(d.subject, "[File] DescText");
   EXPECT_EQ(d.level, impact::cosmetic);
   EXPECT_EQ(d.in, group::other);
-  d = only(base, replaced(base, "ProdName = \"Entries\";", "ProdName = \"Renamed\";"));
+  d = only(base, replaced(base, "ProdName = \"Diff Device\";", "ProdName = \"Renamed\";"));
   EXPECT_EQ(d.subject, "[Device] ProdName");
   EXPECT_EQ(d.level, impact::cosmetic);
   EXPECT_EQ(d.in, group::identity);
@@ -116,13 +101,14 @@ TEST(DiffEntries, DefaultInputMovesToASameOrOtherSizedDataSet) {
 TEST(DiffEntries, LongNamesAreCutAfterFortyCharacters) {
   const std::string forty = "Forty characters of parameter name, 1234";  // 40
   ASSERT_EQ(forty.size(), 40u);
+  // Param1 "Speed" of the tests' device, renamed, its maximum 3000 or 50.
   const auto with = [&](const std::string& name, const char* max) {
-    return base + "[Params]\n        Param1 = 0, , , 0x0000, 0xC7, 2, \"" + name + "\", \"\", \"\", 0, " + max +
-           ", 0, , , , , , , , , 0;\n";
+    return replaced(base, "\"Speed\", \"rpm\", \"Motor speed\", 0, 3000,",
+                    "\"" + name + "\", \"rpm\", \"Motor speed\", 0, " + max + ",");
   };
-  auto d = only(with(forty, "100"), with(forty, "50"));
+  auto d = only(with(forty, "3000"), with(forty, "50"));
   EXPECT_EQ(d.subject, "Param1 \"" + forty + "\"");
-  d = only(with(forty + "5", "100"), with(forty + "5", "50"));
+  d = only(with(forty + "5", "3000"), with(forty + "5", "50"));
   EXPECT_EQ(d.subject, "Param1 \"" + forty + "...\"");
 }
 
@@ -130,12 +116,12 @@ TEST(DiffEntries, LongNamesAreCutAfterFortyCharacters) {
 // quotes do not matter, inside a quoted string they do.
 TEST(DiffEntries, QuotedTextKeepsItsBlanksAndCase) {
   EXPECT_TRUE(compare(base, replaced(base, "Class1 = EtherNetIP;", "Class1 = ETHERNETIP ;")).r.differences.empty());
-  auto d = only(base, replaced(base, "ProdName = \"Entries\";", "ProdName = \"ENTRIES\";"));
+  auto d = only(base, replaced(base, "ProdName = \"Diff Device\";", "ProdName = \"DIFF DEVICE\";"));
   EXPECT_EQ(d.subject, "[Device] ProdName");
-  d = only(base, replaced(base, "DescText = \"entries\";", "DescText = \"en tries\";"));
+  d = only(base, replaced(base, "DescText = \"diff test device\";", "DescText = \"diff testdevice\";"));
   EXPECT_EQ(d.subject, "[File] DescText");
-  d = only(replaced(base, "DescText = \"entries\";", "DescText = \"a b\";"),
-           replaced(base, "DescText = \"entries\";", "DescText = \"a  b\";"));
+  d = only(replaced(base, "DescText = \"diff test device\";", "DescText = \"a b\";"),
+           replaced(base, "DescText = \"diff test device\";", "DescText = \"a  b\";"));
   EXPECT_EQ(d.subject, "[File] DescText");
 }
 
