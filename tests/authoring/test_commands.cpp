@@ -170,6 +170,12 @@ TEST_F(Authoring, NewFromJsonMatchesTheFlags) {
             "--network", "ethernetip", "--input-bytes", "4", "--output-bytes", "2", "--date", "01-02-2024", "-o", b.string()});
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_EQ(read_bytes(a), read_bytes(b));
+  // Not only the same as the flags: the values the JSON gives, where the
+  // format puts them (test_new_options.cpp checks every key field by field).
+  const auto text = read_bytes(a);
+  for (const char* entry : {"VendCode = 65535;", "ProdType = 100;", "ProdCode = 9;", "ProdName = \"Gadget\";",
+                            "CreateDate = 01-02-2024;", "Class1 = EtherNetIP;"})
+    EXPECT_NE(text.find(entry), std::string::npos) << entry << "\n" << text;
   r = edsc({"check", a.string()});
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("0 errors, 0 warnings"), std::string::npos) << r.output;

@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "time_scale.hpp"
+
 extern char** environ;
 
 namespace edsc::cli_test {
@@ -83,7 +85,7 @@ inline run_result run_edsc_with_input(const std::vector<std::string>& args, cons
     ::close(to_child);
     to_child = -1;
   }
-  const auto deadline = start + limit;
+  const auto deadline = start + edsc::test_time::scaled(limit);
   char buf[65536];
   for (;;) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());

@@ -4,7 +4,10 @@ for each corpus folder, given as a relative and as an absolute path: no error,
 no warning. Exits 77 (skipped) when the validator is not installed
 (scripts/npm-tools installs it where npm is present).
 
-usage: validate_sarif.py EDSC NPM_TOOLS_DIR CORPUS_DIR...
+Under the sanitizers each corpus folder is a fixed sample of its files
+(tests/corpus_sample.py), copied to a folder of the same name.
+
+usage: validate_sarif.py [--sample N] EDSC NPM_TOOLS_DIR CORPUS_DIR...
 """
 import json
 import os
@@ -12,6 +15,9 @@ import shutil
 import subprocess
 import sys
 import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from corpus_sample import pop_sample_arg, sample  # noqa: E402
 
 SKIP = 77
 
@@ -52,14 +58,18 @@ def describe(finding):
 
 
 def main():
-    edsc, tools_dir, corpora = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2]), sys.argv[3:]
+    argv = sys.argv[1:]
+    stride = pop_sample_arg(argv)
+    edsc, tools_dir, corpora = os.path.abspath(argv[0]), os.path.abspath(argv[1]), argv[2:]
     tool = validator(tools_dir)
     if tool is None:
         print(f"SKIPPED: Microsoft's SARIF validator is not installed in {tools_dir} "
               "(needs node and npm; run scripts/npm-tools)")
         return SKIP
 
-    with tempfile.TemporaryDirectory(prefix="edsc-sarif-") as work:
+    # The sample lives beside the work folder, so "up" still goes through '..'.
+    with tempfile.TemporaryDirectory(prefix="edsc-sarif-") as work, \
+            tempfile.TemporaryDirectory(prefix="edsc-sarif-sample-") as sample_root:
         # The validator really judges: an absolute path with a uriBaseId is an error.
         bad = os.path.join(work, "bad.sarif")
         with open(bad, "w") as f:
@@ -76,6 +86,12 @@ def main():
         for corpus in corpora:
             corpus = os.path.abspath(corpus)
             name = os.path.basename(corpus)
+            if stride > 1:
+                copy = os.path.join(sample_root, name)
+                os.makedirs(copy)
+                for f in sample(corpus, stride):
+                    shutil.copy(f, copy)
+                corpus = copy
             # Relative: from the folder holding the corpus, and from a sibling
             # (a path through '..'); absolute: from anywhere.
             cases = [("rel", os.path.dirname(corpus), name),

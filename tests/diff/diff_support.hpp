@@ -56,6 +56,39 @@ inline compared compare(const std::string& old_text, const std::string& new_text
   return c;
 }
 
+// A small EtherNet/IP device the diff tests change piece by piece.
+inline const std::string device_eds = R"($ A small EtherNet/IP device for the diff tests
+[File]
+        DescText = "diff test device";
+        CreateDate = 01-15-2024;
+        CreateTime = 10:30:00;
+        Revision = 1.0;
+
+[Device]
+        VendCode = 65535;
+        VendName = "edsc tests";
+        ProdType = 12;
+        ProdTypeStr = "Communications Adapter";
+        ProdCode = 7;
+        MajRev = 2;
+        MinRev = 3;
+        ProdName = "Diff Device";
+        Catalog = "D-1";
+
+[Device Classification]
+        Class1 = EtherNetIP;
+
+[Params]
+        Param1 = 0, , , 0x0000, 0xC7, 2, "Speed", "rpm", "Motor speed", 0, 3000, 1500, , , , , , , , , 0;
+        Param2 = 0, , , 0x0000, 0xC6, 1, "Mode", "", "Operating mode", 0, 2, 0, , , , , , , , , 0;
+        Enum2 = 0, "Off", 1, "Run", 2, "Jog";
+        Param3 = 0, , , 0x0010, 0xC7, 2, "Status", "", "Status word", 0, 65535, 0, , , , , , , , , 0;
+
+[Assembly]
+        Assem100 = "Output", "20 04 24 64 30 03", 4, 0x0000, , , 16, Param1, 8, Param2, 8, ;
+        Assem101 = "Input", "20 04 24 65 30 03", 2, , , , 16, Param3;
+)";
+
 // `text` with the first occurrence of `from` replaced by `to` (which must exist).
 inline std::string replaced(std::string text, const std::string& from, const std::string& to) {
   const auto at = text.find(from);

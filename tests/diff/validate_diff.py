@@ -2,7 +2,8 @@
 """Runs `edsc diff --format=json` on the RightSight pair (both ways), on a file
 against itself, and on each corpus file against the next one (many kinds of
 difference), and validates every output against docs/diff-json.schema.json.
-Usage: validate_diff.py EDSC SCHEMA PROJECT_DIR CORPUS_DIR"""
+Under the sanitizers the corpus is a fixed sample (tests/corpus_sample.py).
+Usage: validate_diff.py [--sample N] EDSC SCHEMA PROJECT_DIR CORPUS_DIR"""
 import json
 import pathlib
 import subprocess
@@ -10,16 +11,21 @@ import sys
 
 import jsonschema
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+from corpus_sample import pop_sample_arg, sample  # noqa: E402
+
 
 def main() -> int:
-    edsc, schema_path = sys.argv[1], pathlib.Path(sys.argv[2])
-    project, corpus = pathlib.Path(sys.argv[3]), pathlib.Path(sys.argv[4])
+    argv = sys.argv[1:]
+    stride = pop_sample_arg(argv)
+    edsc, schema_path = argv[0], pathlib.Path(argv[1])
+    project, corpus = pathlib.Path(argv[2]), pathlib.Path(argv[3])
     schema = json.loads(schema_path.read_text())
     jsonschema.Draft202012Validator.check_schema(schema)
     validator = jsonschema.Draft202012Validator(schema)
     old, new = project / "eds/rightsight-42ef-diffuse.eds", project / "eds/rightsight-42ef-3byte.eds"
     pairs = [(old, new), (new, old), (old, old)]
-    files = sorted(corpus.glob("*.eds"))
+    files = sample(corpus, stride)
     pairs += list(zip(files, files[1:]))
     failures = checked = kinds = 0
     seen = set()

@@ -13,6 +13,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "time_scale.hpp"
+
 extern char** environ;
 
 namespace edsc::lsp_test {
@@ -132,7 +134,7 @@ json lsp_process::initialize(json options) {
 }
 
 std::optional<json> lsp_process::next_message(std::chrono::milliseconds timeout) {
-  const auto deadline = clock::now() + timeout;
+  const auto deadline = clock::now() + edsc::test_time::scaled(timeout);
   for (;;) {
     const auto header_end = buffer_.find("\r\n\r\n");
     if (header_end != std::string::npos) {
@@ -161,7 +163,7 @@ int lsp_process::wait_exit() {
     close(in_);
     in_ = -1;
   }
-  const auto deadline = clock::now() + std::chrono::seconds(20);
+  const auto deadline = clock::now() + edsc::test_time::scaled(std::chrono::seconds(20));
   while (clock::now() < deadline) {
     int st = 0;
     const auto r = waitpid(pid_, &st, WNOHANG);

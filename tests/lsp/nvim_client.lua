@@ -5,6 +5,8 @@
 -- buffer goes to $EDSC_OUT.formatted. Run by tests/lsp/test_neovim.cpp:
 --   nvim --headless --clean -n -u NONE -c 'luafile tests/lsp/nvim_client.lua'
 local out = {}
+-- Waits scale with the build (EDSC_TIME_SCALE: 10 under ASan, tests/time_scale.hpp).
+local scale = tonumber(os.getenv('EDSC_TIME_SCALE') or '1') or 1
 local function say(fmt, ...) table.insert(out, string.format(fmt, ...)) end
 local function finish()
   local f = io.open(os.getenv('EDSC_OUT'), 'w')
@@ -34,8 +36,8 @@ local ok, err = pcall(function()
   local function lsp_code(d)
     return d.code or (d.user_data and d.user_data.lsp and d.user_data.lsp.code) or '?'
   end
-  if not vim.wait(20000, function() return #vim.diagnostic.get(buf) > 0 end, 20) then
-    error('no diagnostics within 20 s')
+  if not vim.wait(20000 * scale, function() return #vim.diagnostic.get(buf) > 0 end, 20) then
+    error('no diagnostics within ' .. 20 * scale .. ' s')
   end
   local names = { 'error', 'warning', 'info', 'hint' }
   for _, d in ipairs(diagnostics()) do
@@ -49,7 +51,7 @@ local ok, err = pcall(function()
     return { textDocument = { uri = vim.uri_from_bufnr(buf) }, position = { line = line - 1, character = col } }
   end
   local function request(method, params)
-    local r = client.request_sync(method, params, 10000, buf)
+    local r = client.request_sync(method, params, 10000 * scale, buf)
     if not r then error(method .. ': no answer') end
     if r.err then return nil, r.err end
     return r.result
@@ -86,7 +88,7 @@ local ok, err = pcall(function()
     vim.lsp.util.apply_workspace_edit(actions[1].edit, enc)
   end
   -- The fix removes the syntax error: wait for the new list.
-  vim.wait(20000, function()
+  vim.wait(20000 * scale, function()
     for _, d in ipairs(vim.diagnostic.get(buf)) do
       if lsp_code(d) == 'syntax-missing-semicolon' then return false end
     end
@@ -110,7 +112,7 @@ local ok, err = pcall(function()
   f:close()
 
   client.stop()
-  vim.wait(5000, function() return client.is_stopped() end, 20)
+  vim.wait(5000 * scale, function() return client.is_stopped() end, 20)
   say('stopped: %s', tostring(client.is_stopped()))
 end)
 if not ok then say('lua error: %s', tostring(err)) end

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <set>
+#include <sstream>
 #include <tuple>
 
 #include "lsp/lsp_client.hpp"
@@ -61,8 +62,32 @@ TEST(LspDiagnostics, PublishedOnOpenWithRangesCodesAndNotes) {
   EXPECT_EQ((*dup)["relatedInformation"][0]["location"]["range"]["start"], (json{{"line", 18}, {"character", 8}}));
 }
 
+// The findings of a corpus file as its reviewed record in tests/check/corpus
+// holds them (rule, severity, 0-based line): written and reviewed by hand, so
+// they back the comparison with `edsc check` with an expectation that does not
+// come from the same engine run now.
+std::multiset<std::tuple<std::string, std::string, int>> reviewed_findings(const std::string& path) {
+  namespace fs = std::filesystem;
+  const fs::path eds(path);
+  auto golden = fs::path(EDSC_TESTS_DIR) / "check" / "corpus";
+  if (eds.parent_path().filename() == "eds-corpus-rockwell") golden /= "rockwell";
+  golden /= eds.filename().string() + ".txt";
+  std::multiset<std::tuple<std::string, std::string, int>> out;
+  std::istringstream lines(read_bytes(golden.string()));
+  for (std::string line; std::getline(lines, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    const auto colon = line.find(':');
+    const auto sev_at = line.find(": ", colon + 1) + 2;
+    const auto sev_end = line.find(':', sev_at);
+    const auto rule_at = line.rfind(" [") + 2;
+    out.insert({line.substr(rule_at, line.size() - rule_at - 1), line.substr(sev_at, sev_end - sev_at),
+                std::stoi(line.substr(0, colon)) - 1});
+  }
+  return out;
+}
+
 // The same findings as `edsc check` (ids, severities, lines), on real files
-// of both corpora.
+// of both corpora, and as their reviewed records say.
 TEST(LspDiagnostics, SameFindingsAsCheck) {
   namespace fs = std::filesystem;
   std::vector<std::string> files{defect_path};
@@ -70,12 +95,15 @@ TEST(LspDiagnostics, SameFindingsAsCheck) {
     const fs::path root = fs::path(EDSC_CORPUS_DIR).parent_path().string() + dir;
     if (!fs::is_directory(root)) continue;
     std::vector<std::string> all;
-    for (const auto& e : fs::directory_iterator(root)) all.push_back(e.path().string());
+    // EDS files only (the Rockwell folder also holds its MANIFEST.tsv).
+    for (const auto& e : fs::directory_iterator(root))
+      if (e.path().extension() == ".eds") all.push_back(e.path().string());
     std::sort(all.begin(), all.end());
     for (std::size_t i = 0; i < all.size(); i += 15) files.push_back(all[i]);
   }
   lsp_process p;
   p.initialize();
+  std::size_t reviewed = 0;
   for (const auto& path : files) {
     SCOPED_TRACE(path);
     using finding = std::tuple<std::string, std::string, int>;
@@ -92,7 +120,40 @@ TEST(LspDiagnostics, SameFindingsAsCheck) {
     for (const auto& d : published["diagnostics"])
       got.insert({d["code"], names[d["severity"].get<int>()], d["range"]["start"]["line"].get<int>()});
     EXPECT_EQ(got, expected);
+    if (path != defect_path) {
+      EXPECT_EQ(got, reviewed_findings(path));
+      ++reviewed;
+    }
   }
+  EXPECT_GE(reviewed, 8u);
+}
+
+// Ranges count UTF-16 units: characters outside the BMP are two each. The
+// missing ';' of `DescText = "😀😀 x"` is after the closing quote: 12 units of
+// `DescText = "`, 2 + 2 for the emoji, 2 for ` x`, 1 for the quote: 19 (23 bytes).
+TEST(LspDiagnostics, RangesCountUtf16UnitsOutsideTheBmp) {
+  const std::string text =
+      "[File]\n"
+      "DescText = \"\xF0\x9F\x98\x80\xF0\x9F\x98\x80 x\"\n"
+      "CreateDate = 01-02-2024;\n";
+  lsp_process p;
+  p.initialize();
+  p.notify("textDocument/didOpen",
+           json{{"textDocument", {{"uri", "file:///tmp/astral.eds"}, {"languageId", "eds"}, {"version", 1}, {"text", text}}}});
+  const auto diags = p.wait_notification("textDocument/publishDiagnostics")["params"]["diagnostics"];
+  const auto* semi = find_code(diags, "syntax-missing-semicolon");
+  ASSERT_TRUE(semi) << diags.dump();
+  EXPECT_EQ((*semi)["range"]["start"], (json{{"line", 1}, {"character", 19}})) << semi->dump();
+  // The quick fix inserts the ';' at that same UTF-16 position.
+  const auto actions = p.request(
+      "textDocument/codeAction",
+      json{{"textDocument", {{"uri", "file:///tmp/astral.eds"}}},
+           {"range", (*semi)["range"]},
+           {"context", {{"diagnostics", json::array({*semi})}, {"only", json::array({"quickfix"})}}}});
+  ASSERT_FALSE(actions["result"].empty()) << actions.dump();
+  const auto& edit = actions["result"][0]["edit"]["changes"]["file:///tmp/astral.eds"][0];
+  EXPECT_EQ(edit["newText"], ";");
+  EXPECT_EQ(edit["range"]["start"], (json{{"line", 1}, {"character", 19}})) << edit.dump();
 }
 
 TEST(LspDiagnostics, WarningFlagsFromInitializationOptionsAndCommandLine) {
@@ -170,6 +231,10 @@ TEST(LspFormatting, IsEdscFmtAndRefusesBrokenSyntax) {
                            json{{"textDocument", {{"uri", uri}}}, {"options", {{"tabSize", 2}, {"insertSpaces", true}}}});
   ASSERT_TRUE(r.contains("result")) << r.dump();
   EXPECT_EQ(apply_edits(messy, r["result"]), run_edsc_stdout("fmt '" + clean + "'"));
+  // And independently of fmt: the project file is kept in fmt's layout (the
+  // authoring tests run `fmt --check` on it), so undoing the mess gives it back.
+  EXPECT_EQ(apply_edits(messy, r["result"]), text);
+  EXPECT_NE(messy, text);
 
   open_file(p, defect_path);  // a missing ';' is a syntax error
   const auto refused = p.request("textDocument/formatting", json{{"textDocument", {{"uri", file_uri(defect_path)}}}});

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "lsp/lsp_client.hpp"
+#include "time_scale.hpp"
 
 namespace edsc::lsp_test {
 namespace {
@@ -26,7 +27,8 @@ TEST(LspNeovim, HeadlessClientSession) {
   const auto out = dir / "transcript.txt";
   const std::string cmd = "cd '" + dir.string() + "' && EDSC_BIN='" + EDSC_BINARY + "' EDSC_EDS='" + eds.string() +
                           "' EDSC_OUT='" + out.string() + "' HOME='" + dir.string() +
-                          "' timeout 120 nvim --headless --clean -n -u NONE -i NONE -c 'luafile " + EDSC_TESTS_DIR +
+                          "' EDSC_TIME_SCALE=" + std::to_string(edsc::test_time::scale) +
+                          " timeout " + std::to_string(edsc::test_time::scaled(120)) + " nvim --headless --clean -n -u NONE -i NONE -c 'luafile " + EDSC_TESTS_DIR +
                           "/lsp/nvim_client.lua' >/dev/null 2>&1";
   ASSERT_EQ(std::system(cmd.c_str()), 0);
   const auto transcript = read_bytes(out.string());

@@ -30,6 +30,38 @@ TEST(LspPositions, Utf16UnitsPerCharacter) {
   EXPECT_EQ(utf16_length("\xF0\x9F\x98\x80\xFFx"), 4u);  // an invalid byte counts one unit
 }
 
+// Characters outside the BMP (4 UTF-8 bytes, 2 UTF-16 units): side by side,
+// after other multi-byte characters, on a later line after CRLF.
+TEST(LspPositions, CharactersOutsideTheBmp) {
+  // Line 0: 😀 (U+1F600) 𠀀 (U+20000) x; line 1: é 😀 y.
+  const std::string text = "\xF0\x9F\x98\x80\xF0\xA0\x80\x80x\r\n\xC3\xA9\xF0\x9F\x98\x80y";
+  const line_index lines(text);
+  // Byte offset -> (line, UTF-16 unit), worked out per character.
+  const std::pair<std::uint32_t, position> at[] = {
+      {0, {0, 0}}, {4, {0, 2}}, {8, {0, 4}}, {9, {0, 5}},     // after 😀, after 𠀀, after x
+      {11, {1, 0}}, {13, {1, 1}}, {17, {1, 3}}, {18, {1, 4}},  // after CRLF, é, 😀, y
+  };
+  for (const auto& [offset, pos] : at) {
+    EXPECT_EQ(lines.to_position(offset), pos) << offset;
+    EXPECT_EQ(lines.to_offset(pos), offset) << pos.line << ":" << pos.character;
+  }
+  // Inside a pair (the low surrogate's unit): the position after the character.
+  EXPECT_EQ(lines.to_offset({0, 1}), 4u);
+  EXPECT_EQ(lines.to_offset({0, 3}), 8u);
+  EXPECT_EQ(lines.to_offset({1, 2}), 17u);
+  // Inside the UTF-8 bytes of a character: after it.
+  EXPECT_EQ(lines.to_position(2), (position{0, 2}));
+  EXPECT_EQ(lines.to_position(15), (position{1, 3}));
+  // Past the end of a line: before its CRLF.
+  EXPECT_EQ(lines.to_offset({0, 6}), 9u);
+  EXPECT_EQ(lines.to_range({4, 17}), (range{{0, 2}, {1, 3}}));
+  EXPECT_EQ(utf16_length("\xF0\x9F\x98\x80\xF0\xA0\x80\x80x"), 5u);
+  // A change that replaces one astral character by another keeps the rest.
+  std::string edited = text;
+  apply_change(edited, {range{{1, 1}, {1, 3}}, "\xF0\xA0\x80\x80"});
+  EXPECT_EQ(edited, "\xF0\x9F\x98\x80\xF0\xA0\x80\x80x\r\n\xC3\xA9\xF0\xA0\x80\x80y");
+}
+
 TEST(LspPositions, AppliesIncrementalChanges) {
   std::string text = "ab\xF0\x9F\x98\x80" "cd\nef\n";
   apply_change(text, {range{{0, 2}, {0, 4}}, "X"});  // replace the emoji

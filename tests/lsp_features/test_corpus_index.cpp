@@ -2,6 +2,7 @@
 // must find each reference the model holds, with the same kind and number.
 #include <filesystem>
 
+#include "corpus_dirs.hpp"
 #include "lsp/ref_index.hpp"
 #include "lsp_support.hpp"
 #include "model/visit.hpp"
@@ -13,8 +14,8 @@ namespace fs = std::filesystem;
 
 void check_dir(const std::string& dir) {
   std::size_t files = 0, refs = 0;
-  for (const auto& e : fs::directory_iterator(dir)) {
-    if (e.path().extension() != ".eds") continue;
+  for (const auto& path : corpora::sample_of(dir)) {
+    const fs::directory_entry e(path);
     auto a = analyze_path(e.path().string());
     if (!a) continue;
     ++files;
@@ -33,12 +34,14 @@ void check_dir(const std::string& dir) {
       EXPECT_EQ(local->name, s->name);
     });
   }
-  EXPECT_GT(files, 10u);
-  EXPECT_GT(refs, 100u);
+  EXPECT_GE(files, 8u);
+  // Over a whole corpus more than 100 references; the sanitizer build's
+  // sample of the Rockwell files (few references each) holds a handful.
+  EXPECT_GT(refs, corpora::sample_stride() == 1 ? 100u : 0u);
 }
 
 TEST(LspIndexCorpus, EveryModelReferenceIsASite) { check_dir(EDSC_CORPUS_DIR); }
-TEST(LspIndexCorpus, EveryModelReferenceIsASiteRockwell) { check_dir(EDSC_CORPUS_DIR "/../eds-corpus-rockwell"); }
+TEST(LspIndexCorpus, EveryModelReferenceIsASiteRockwell) { check_dir(EDSC_CORPUS_ROCKWELL_DIR); }
 
 }  // namespace
 }  // namespace edsc::test

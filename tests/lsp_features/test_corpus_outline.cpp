@@ -38,7 +38,7 @@ void well_formed(const lsp::line_index& lines, const json& r) {
 
 TEST(LspOutlineCorpus, HighlightsFoldsAndSymbolsOfEveryFile) {
   std::size_t files = 0, highlights = 0, writes = 0, folds = 0, capped = 0;
-  for (const auto& path : corpora::all_files()) {
+  for (const auto& path : corpora::sample()) {
     SCOPED_TRACE(path.string());
     const auto text = read_all(path);
     std::vector<json> answers;
@@ -104,11 +104,16 @@ TEST(LspOutlineCorpus, HighlightsFoldsAndSymbolsOfEveryFile) {
     }
     ++files;
   }
-  EXPECT_EQ(files, corpora::file_count);
-  EXPECT_GT(highlights, 5000u);
-  EXPECT_GT(writes, 1000u);
-  EXPECT_GT(folds, 10000u);
-  EXPECT_GT(capped, 0u);  // the largest files have more than 1000 symbols
+  EXPECT_GE(files, corpora::sample_size());
+  // Over the whole corpora: more than 5000 highlights, 1000 writes and 10000
+  // folds; per file, so the sanitizer build's sample is held to the same.
+  EXPECT_GT(highlights, 28 * files);
+  EXPECT_GT(writes, 5 * files);
+  EXPECT_GT(folds, 56 * files);
+  // The largest files have more than 1000 symbols; the sample may miss them.
+  if (files >= corpora::file_count) {
+    EXPECT_GT(capped, 0u);
+  }
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "corpus_dirs.hpp"
+#include "golden.hpp"
 #include "emit/emit_json.hpp"
 #include "model_support.hpp"
 
@@ -26,7 +27,7 @@ std::string slurp(const fs::path& p) {
 }
 
 std::vector<fs::path> corpus_files() {
-  return edsc::corpora::all_files();
+  return edsc::corpora::sample();
 }
 
 std::string lower_ascii(std::string s) {
@@ -94,7 +95,7 @@ int sum(const std::map<std::string, int>& n, const std::string& section_prefix, 
 
 TEST(CorpusModel, EveryFileLowersAndCountsAgree) {
   const auto files = corpus_files();
-  ASSERT_GE(files.size(), 100u);
+  ASSERT_GE(files.size(), edsc::corpora::sample_size());
   std::chrono::nanoseconds lower_time{0};
   std::size_t bytes = 0;
   for (const auto& f : files) {
@@ -148,7 +149,7 @@ TEST_P(GoldenDump, MatchesCheckedInJson) {
   diagnostics diags;
   const auto dev = lower(parsed.tree, diags);
   const std::string out = emit::to_json(dev, *src).dump(1) + "\n";
-  if (std::getenv("EDSC_UPDATE_GOLDEN")) {
+  if (edsc::test::update_golden()) {
     std::ofstream(golden, std::ios::binary) << out;
     GTEST_SKIP() << "golden rewritten: " << golden;
   }

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include "emit/emit_json.hpp"
+#include "model/visit.hpp"
 #include "model_support.hpp"
 
 using namespace edsc;
@@ -116,13 +118,47 @@ TEST(Identity, UnknownAndVendorSectionsAreKept) {
   EXPECT_EQ(l->dev.unknown[2].reason, model::raw_reason::unknown_keyword);
 }
 
+// Broken text lowers without throwing, completely, into what it names: an
+// entry whose fields are empty or of the wrong kind is still that entity (a
+// tool can point at it), each origin lies inside the text, and the dump of
+// the result is well-formed.
 TEST(Identity, GarbageNeverThrows) {
-  for (const char* text : {"", "[", "[File]\n DescText", "[Params]\n Param1 = ;\n Enum1 = 1;",
-                           "[Assembly]\n Assem1 = ,,,,,,,,,;", "[Connection Manager]\n Connection1 = {};",
-                           "x = 1;\n[File] DescText = {{{}}};"}) {
-    auto l = test::lower_text(text);
-    EXPECT_FALSE(l->dev.incomplete) << text;
+  struct garbage {
+    const char* text;
+    std::size_t sections, params, enums, assemblies, connections;
+  };
+  const garbage cases[] = {
+      {"", 0, 0, 0, 0, 0},
+      {"[File]\n DescText", 1, 0, 0, 0, 0},
+      {"[Params]\n Param1 = ;\n Enum1 = 1;", 1, 1, 1, 0, 0},
+      {"[Assembly]\n Assem1 = ,,,,,,,,,;", 1, 0, 0, 1, 0},
+      {"[Connection Manager]\n Connection1 = {};", 1, 0, 0, 0, 1},
+      {"x = 1;\n[File] DescText = {{{}}};", 1, 0, 0, 0, 0},
+  };
+  for (const auto& g : cases) {
+    SCOPED_TRACE(g.text);
+    std::unique_ptr<test::lowered> l;
+    ASSERT_NO_THROW(l = test::lower_text(g.text));
+    EXPECT_FALSE(l->dev.incomplete);
+    EXPECT_EQ(l->dev.sections.size(), g.sections);
+    EXPECT_EQ(l->dev.params.size(), g.params);
+    EXPECT_EQ(l->dev.enums.size(), g.enums);
+    EXPECT_EQ(l->dev.assemblies.size(), g.assemblies);
+    EXPECT_EQ(l->dev.connections.size(), g.connections);
+    for (const auto& p : l->dev.params) EXPECT_EQ(p.number, 1u);
+    for (const auto& a : l->dev.assemblies) EXPECT_EQ(a.number, 1u);
+    for (const auto& c : l->dev.connections) EXPECT_EQ(c.number, 1u);
+    const auto size = l->src->text().size();
+    model::for_each_value(l->dev, [&](const model::value& v) { EXPECT_LE(v.from.where.end, size); });
+    std::string dump;
+    ASSERT_NO_THROW(dump = emit::to_json(l->dev, *l->src).dump());
+    EXPECT_EQ(dump.front(), '{');
   }
+  // A lone '[' is no section at all, and still no exception.
+  std::unique_ptr<test::lowered> l;
+  ASSERT_NO_THROW(l = test::lower_text("["));
+  EXPECT_FALSE(l->dev.incomplete);
+  EXPECT_TRUE(l->dev.params.empty());
 }
 
 TEST(Identity, EntityOriginsPointAtTheKeyword) {

@@ -3,6 +3,10 @@
 // to write a map of a broken network.
 #include <gtest/gtest.h>
 
+#include <map>
+#include <regex>
+#include <set>
+
 #include <nlohmann/json.hpp>
 
 #include "network_support.hpp"
@@ -90,6 +94,54 @@ TEST_F(Net, SvgIsWholeAndChecked) {
   EXPECT_EQ(svg, read_bytes(fs::path(EDSC_PROJECT_DIR) / "docs" / "network-thesis.svg"));
   EXPECT_EQ(svg.rfind("<svg", 0), 0u);
   EXPECT_NE(svg.find("</svg>\n"), std::string::npos);
+}
+
+// What the map shows, read from the SVG's elements rather than compared as
+// bytes: each node's box in an image row sits where its bytes are. A row
+// is 8 DWords (32 bytes) over 576 px from x = 140, so 18 px per byte; the
+// bytes are the thesis layout worked out by hand in Net.ThesisLayoutByHand
+// (inputs: RightSight 0-2, temperature 4, discrete 8-10, level 12, PanelView
+// 16-27; output: PanelView 0-7), each node's data starting on a DWord.
+TEST_F(Net, SvgPlacesEachNodeWhereItsBytesAre) {
+  const auto r = run_edsc({"net", "map", thesis.string(), "--format=svg"});
+  ASSERT_EQ(r.status, 0) << r.output;
+  struct box {
+    int mac, first, bytes;
+    std::string image;
+  };
+  const box want[] = {{2, 0, 3, "I"}, {8, 4, 1, "I"}, {9, 8, 3, "I"}, {10, 12, 1, "I"}, {12, 16, 12, "I"},
+                      {12, 0, 8, "O"}};
+  static const std::regex node(
+      R"re(<rect x="(\d+)" y="(\d+)" width="(\d+)" height="26" fill="[^"]+" class="node"><title>MAC (\d+) \w+: \w+ (\d+) bytes (\d+)-(\d+), Local:5:(I|O)\.)re");
+  std::vector<box> got;
+  std::map<std::string, std::set<int>> rows;  // image -> the y of its boxes
+  for (auto it = std::sregex_iterator(r.output.begin(), r.output.end(), node); it != std::sregex_iterator(); ++it) {
+    const auto& m = *it;
+    const int x = std::stoi(m[1]), y = std::stoi(m[2]), width = std::stoi(m[3]);
+    const int bytes = std::stoi(m[5]), first = std::stoi(m[6]), last = std::stoi(m[7]);
+    SCOPED_TRACE(m.str());
+    EXPECT_EQ(last - first + 1, bytes);
+    EXPECT_EQ(first % 4, 0) << "not on a DWord";
+    EXPECT_EQ(x, 140 + 18 * (first % 32));
+    EXPECT_EQ(width, 18 * bytes);
+    // The MAC is written in the box, 3 px in.
+    EXPECT_NE(r.output.find("<text x=\"" + std::to_string(x + 3) + "\" y=\"" + std::to_string(y + 17) +
+                                "\" class=\"label\">" + m[4].str()),
+              std::string::npos);
+    got.push_back({std::stoi(m[4]), first, bytes, m[8]});
+    rows[m[8]].insert(y);
+  }
+  ASSERT_EQ(got.size(), std::size(want));
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    EXPECT_EQ(got[i].mac, want[i].mac) << i;
+    EXPECT_EQ(got[i].first, want[i].first) << i;
+    EXPECT_EQ(got[i].bytes, want[i].bytes) << i;
+    EXPECT_EQ(got[i].image, want[i].image) << i;
+  }
+  // All of them fit the first row of their image; the output image is below the input one.
+  ASSERT_EQ(rows["I"].size(), 1u);
+  ASSERT_EQ(rows["O"].size(), 1u);
+  EXPECT_LT(*rows["I"].begin(), *rows["O"].begin());
 }
 
 TEST_F(Net, NamesAreEscapedInEveryFormat) {

@@ -1,0 +1,128 @@
+// What a change of an entry outside the parameters, assemblies and I/O means
+// for a configured network, by section (compiler/diff/diff_entries.cpp), and
+// the DeviceNet masks and connection names: cases the mutation run of
+// compiler/diff (docs/testing.md) found no test for, each verdict worked out
+// from the section's meaning.
+#include "diff_support.hpp"
+
+using namespace diff_test;
+using edsc::diff::group;
+
+namespace {
+
+// The tests' device with a [Capacity] section.
+const std::string base = device_eds +
+                         "[Capacity]\n"
+                         "        MaxIOConnections = 4;\n"
+                         "        MaxMsgConnections = 6;\n";
+
+// The one difference of `before` -> `after`.
+difference only(const std::string& before, const std::string& after) {
+  const auto c = compare(before, after);
+  EXPECT_EQ(c.r.differences.size(), 1u) << c.dump();
+  return c.r.differences.empty() ? difference{} : c.r.differences[0];
+}
+
+TEST(DiffEntries, DeviceClassificationChangeIsBreaking) {
+  // Tools offer the device on the networks the file declares.
+  const auto d = only(base, replaced(base, "Class1 = EtherNetIP;", "Class1 = DeviceNet;"));
+  EXPECT_EQ(d.kind, "entry-changed");
+  EXPECT_EQ(d.subject, "[Device Classification] Class1");
+  EXPECT_EQ(d.level, impact::breaking);
+  EXPECT_EQ(d.in, group::identity);
+}
+
+TEST(DiffEntries, CapacityLimitLoweredIsBreakingRaisedIsAdditive) {
+  auto d = only(base, replaced(base, "MaxIOConnections = 4;", "MaxIOConnections = 3;"));
+  EXPECT_EQ(d.kind, "entry-changed");
+  EXPECT_EQ(d.subject, "[Capacity] MaxIOConnections");
+  EXPECT_EQ(d.level, impact::breaking);  // 3 < 4: a configuration using 4 is refused
+  EXPECT_EQ(d.message, "4 -> 3");
+  d = only(base, replaced(base, "MaxIOConnections = 4;", "MaxIOConnections = 5;"));
+  EXPECT_EQ(d.level, impact::additive);  // 5 > 4: every configuration still fits
+  // The same limit written in hex is no change at all.
+  EXPECT_TRUE(compare(base, replaced(base, "MaxIOConnections = 4;", "MaxIOConnections = 0x04;")).r.differences.empty());
+  // Removed: never better than cosmetic; added: additive.
+  d = only(base, replaced(base, "        MaxMsgConnections = 6;\n", ""));
+  EXPECT_EQ(d.kind, "entry-removed");
+  EXPECT_EQ(d.level, impact::cosmetic);
+  d = only(replaced(base, "        MaxMsgConnections = 6;\n", ""), base);
+  EXPECT_EQ(d.kind, "entry-added");
+  EXPECT_EQ(d.level, impact::additive);
+}
+
+TEST(DiffEntries, DescriptiveTextIsCosmetic) {
+  auto d = only(base, replaced(base, "DescText = \"diff test device\";", "DescText = \"other\";"));
+  EXPECT_EQ(d.subject, "[File] DescText");
+  EXPECT_EQ(d.level, impact::cosmetic);
+  EXPECT_EQ(d.in, group::other);
+  d = only(base, replaced(base, "ProdName = \"Diff Device\";", "ProdName = \"Renamed\";"));
+  EXPECT_EQ(d.subject, "[Device] ProdName");
+  EXPECT_EQ(d.level, impact::cosmetic);
+  EXPECT_EQ(d.in, group::identity);
+}
+
+// DeviceNet: losing Poll (bit 0: old mask & ~new mask == 1) is a loss like
+// any other bit; gaining it is additive.
+TEST(DiffEntries, PollWithdrawnFromAMaskIsBreaking) {
+  const auto old_text = project_file("eds/rightsight-42ef-diffuse.eds");
+  const auto with_poll = replaced(old_text, "0x0006,                         $ strobe and change of state", "0x0007,");
+  const auto gained = compare(old_text, with_poll);
+  const auto* g = gained.find("io-connection-mask");
+  ASSERT_NE(g, nullptr) << gained.dump();
+  EXPECT_EQ(g->level, impact::additive);
+  const auto lost = compare(with_poll, old_text);
+  const auto* l = lost.find("io-connection-mask");
+  ASSERT_NE(l, nullptr) << lost.dump();
+  EXPECT_EQ(l->level, impact::breaking);
+  EXPECT_EQ(l->message, "usable with Poll, Strobe, COS -> Strobe, COS");
+}
+
+// A connection's default input moves to another data set: of the same size,
+// the scanner's image stays as it is (cosmetic); of another size, it breaks.
+TEST(DiffEntries, DefaultInputMovesToASameOrOtherSizedDataSet) {
+  const auto rs = project_file("eds/rightsight-42ef-diffuse.eds");
+  const auto with_input2 = [&](const char* size) {
+    return replaced(rs, "\"Bits 6-7: unused\";",
+                    std::string("\"Bits 6-7: unused\";\n        Input2 = ") + size +
+                        ", 0, 0x0004, \"Other\", 6, \"20 04 24 02 30 03\", \"\";");
+  };
+  for (const char* size : {"1", "2"}) {
+    SCOPED_TRACE(size);
+    const auto before = with_input2(size);
+    const auto c = compare(before, replaced(before, "COSInfo = 0x0004, 1, 0;", "COSInfo = 0x0004, 2, 0;"));
+    const auto* d = c.find("io-connection-default");
+    ASSERT_NE(d, nullptr) << c.dump();
+    EXPECT_EQ(d->level, std::string(size) == "1" ? impact::cosmetic : impact::breaking) << c.dump();
+  }
+}
+
+// Subjects name a parameter by its name, cut after 40 characters with "...".
+TEST(DiffEntries, LongNamesAreCutAfterFortyCharacters) {
+  const std::string forty = "Forty characters of parameter name, 1234";  // 40
+  ASSERT_EQ(forty.size(), 40u);
+  // Param1 "Speed" of the tests' device, renamed, its maximum 3000 or 50.
+  const auto with = [&](const std::string& name, const char* max) {
+    return replaced(base, "\"Speed\", \"rpm\", \"Motor speed\", 0, 3000,",
+                    "\"" + name + "\", \"rpm\", \"Motor speed\", 0, " + max + ",");
+  };
+  auto d = only(with(forty, "3000"), with(forty, "50"));
+  EXPECT_EQ(d.subject, "Param1 \"" + forty + "\"");
+  d = only(with(forty + "5", "3000"), with(forty + "5", "50"));
+  EXPECT_EQ(d.subject, "Param1 \"" + forty + "...\"");
+}
+
+// Values compare as written apart from layout: blanks and case outside
+// quotes do not matter, inside a quoted string they do.
+TEST(DiffEntries, QuotedTextKeepsItsBlanksAndCase) {
+  EXPECT_TRUE(compare(base, replaced(base, "Class1 = EtherNetIP;", "Class1 = ETHERNETIP ;")).r.differences.empty());
+  auto d = only(base, replaced(base, "ProdName = \"Diff Device\";", "ProdName = \"DIFF DEVICE\";"));
+  EXPECT_EQ(d.subject, "[Device] ProdName");
+  d = only(base, replaced(base, "DescText = \"diff test device\";", "DescText = \"diff testdevice\";"));
+  EXPECT_EQ(d.subject, "[File] DescText");
+  d = only(replaced(base, "DescText = \"diff test device\";", "DescText = \"a b\";"),
+           replaced(base, "DescText = \"diff test device\";", "DescText = \"a  b\";"));
+  EXPECT_EQ(d.subject, "[File] DescText");
+}
+
+}  // namespace

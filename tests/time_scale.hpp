@@ -1,0 +1,20 @@
+#pragma once
+// Time limits inside the tests, multiplied by the build's EDSC_TEST_TIME_SCALE
+// (1 in Release, 10 under ASan + UBSan; tests/CMakeLists.txt), so a verdict
+// never hangs on how slow the instrumented build or a loaded machine is. A
+// limit only catches hangs; the real checks are on what a run produced.
+#ifndef EDSC_TEST_TIME_SCALE
+#define EDSC_TEST_TIME_SCALE 1
+#endif
+
+namespace edsc::test_time {
+
+inline constexpr int scale = EDSC_TEST_TIME_SCALE;
+
+// `limit` (a std::chrono duration or a plain count) times the scale.
+template <class T>
+constexpr T scaled(T limit) {
+  return limit * scale;
+}
+
+}  // namespace edsc::test_time
