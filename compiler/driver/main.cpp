@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
     register_doc(app, run);
     register_diff(app, run);
     register_probe(app, run);
+    register_sim(app, run);
     try {
       app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
