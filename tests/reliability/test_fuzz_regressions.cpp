@@ -38,6 +38,7 @@ TEST(FuzzRegressions, Lsp) { replay("lsp", lsp_body); }
 TEST(FuzzRegressions, Network) { replay("network", network_body); }
 TEST(FuzzRegressions, Diff) { replay("diff", diff_body); }
 TEST(FuzzRegressions, Cip) { replay("cip", cip_body); }
+TEST(FuzzRegressions, Sim) { replay("sim", sim_body); }
 TEST(FuzzRegressions, DiffSeedPairs) { replay("diff", diff_body, "seeds"); }
 
 // Every body also runs on a few shapes the fuzzers start from.
@@ -45,7 +46,7 @@ TEST(FuzzRegressions, Seeds) {
   for (const std::string& input : {std::string(), std::string("["), std::string("[File]\nA = {{{{"),
                                   std::string("\xff\xfe\0", 3)}) {
     const body bodies[] = {parse_body,  check_body,   fmt_body,  edit_body, header_body,
-                           lsp_body,    network_body, diff_body, cip_body};
+                           lsp_body,    network_body, diff_body, cip_body, sim_body};
     for (const body run : bodies) EXPECT_EQ(run(input), "");
   }
 }
