@@ -52,6 +52,28 @@ TEST_F(sim_device, openers_eds_passes_verify_live_with_every_connection_opened) 
   EXPECT_NE(out.find("{\"event\":\"stopped\""), std::string::npos) << out;
 }
 
+TEST_F(sim_device, a_captured_session_decodes_in_tshark_without_malformed_packets) {
+  if (live_test::shell("command -v tcpdump >/dev/null && command -v tshark >/dev/null").status != 0)
+    GTEST_SKIP() << "tcpdump or tshark is missing (Debian packages tcpdump, tshark)";
+  const auto pcap = net_->dir + "/sim.pcap";
+  const auto dump = net_->spawn({"tcpdump", "-i", net_->dev_if, "--immediate-mode", "-U", "-n", "-w", pcap}, "tcpdump.log");
+  ASSERT_GT(dump, 0);
+  for (int i = 0; i < 200 && live_test::shell("grep -q listening " + net_->dir + "/tcpdump.log").status != 0; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  const auto probe = run_edsc("probe " + net_->device_ip + " --udp --timeout 5");
+  EXPECT_EQ(probe.status, 0) << probe.output;
+  const auto r = run_edsc("verify --live " + net_->device_ip + " " + quoted(opener_eds) + " --connections", 60);
+  EXPECT_EQ(r.status, 0) << r.output;
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  net_->stop(dump, SIGINT);
+  const auto base = "tshark -r " + quoted(pcap) + " -d udp.port==2222,cipio ";
+  EXPECT_GT(std::stoi(live_test::shell(base + "2>/dev/null | wc -l").out), 20);
+  const auto malformed = live_test::shell(base + "-Y '_ws.malformed || _ws.expert.severity >= error' 2>/dev/null");
+  EXPECT_EQ(malformed.out, "") << malformed.out;
+  const auto name = live_test::shell(base + "-Y enip.lir.name -T fields -E separator=, -e enip.lir.serial -e enip.lir.name 2>/dev/null");
+  EXPECT_NE(name.out.find("0x075bcd15,OpENer PC"), std::string::npos) << name.out;
+}
+
 struct fault {
   const char* name;
   const char* set;
