@@ -29,6 +29,7 @@ void register_all(CLI::App& app, command_action& run) {
   register_doc(app, run);
   register_diff(app, run);
   register_probe(app, run);
+  register_sim(app, run);
   register_completions(app, run);
 }
 

@@ -104,6 +104,11 @@ cip::conn_priority pick_priority(const model::direction_params& d) {
 
 }  // namespace
 
+std::optional<std::string> encode_connection_path(const model::device& dev, const model::epath& p,
+                                                  cip::bytes& out) {
+  return encode_path(dev, p, out);
+}
+
 std::uint16_t network_size(std::uint32_t data, bool run_idle) {
   return static_cast<std::uint16_t>(data + 2 + (run_idle && data > 0 ? 4 : 0));
 }

@@ -34,6 +34,7 @@
 #include "network/plan.hpp"
 #include "network/render_map.hpp"
 #include "parse/parser.hpp"
+#include "sim/state.hpp"
 #include "source/line_starts.hpp"
 #include "source/source_file.hpp"
 
@@ -331,6 +332,76 @@ inline std::string cip_body(std::string_view input) {
     if (f.ok() && f->data.size() > b.size()) return "an I/O frame with more data than bytes";
   }
   return broken;
+}
+
+// A small device for the simulator's fuzz body: one exclusive owner with
+// configuration and one input-only connection.
+inline constexpr std::string_view sim_fuzz_eds = R"eds([File]
+DescText = "edsc sim fuzz device";
+CreateDate = 11-26-2026;
+CreateTime = 00:00:00;
+Revision = 1.0;
+
+[Device]
+VendCode = 65535;
+VendName = "edsc";
+ProdType = 12;
+ProdTypeStr = "Communications Adapter";
+ProdCode = 7;
+MajRev = 1;
+MinRev = 2;
+ProdName = "edsc sim fuzz";
+
+[Device Classification]
+Class1 = EtherNetIP;
+
+[Params]
+Param1 = 0,,,0x0000,0xC8,4,"RPI","","",1000,100000,20000,,,,,,,,,;
+
+[Assembly]
+Assem100 = "Input",,8,0x0000,,,;
+Assem150 = "Output",,4,0x0000,,,;
+Assem151 = "Config",,2,0x0000,,,;
+
+[Connection Manager]
+Connection1 = 0x84010002,0x44640405,Param1,,Assem150,Param1,,Assem100,,,,Assem151,"Owner","","20 04 24 97 2C 96 2C 64";
+Connection2 = 0x02010002,0x44640305,Param1,0,,Param1,,Assem100,,,,,"Input only","","20 04 24 97 2C 98 2C 64";
+)eds";
+
+// The simulator's request handling on any bytes (what a hostile scanner may
+// send): the first byte picks the door (TCP or UDP encapsulation, a bare CIP
+// request, a class 1 frame), the rest is the message. No crash, no stall, and
+// every encapsulation reply's length field counts its bytes.
+inline std::string sim_body(std::string_view input) {
+  static const auto model = edit::analyze("fuzz.eds", std::string(sim_fuzz_eds));
+  static const auto prototype = sim::build_device(model->dev, 1);
+  if (input.empty()) return {};
+  sim::state s;
+  s.dev = prototype;
+  sim::link l{0x0100007F, 0};
+  const auto now = sim::clock::time_point{} + std::chrono::hours(1);
+  const cip::byte_view b(reinterpret_cast<const std::uint8_t*>(input.data()) + 1, input.size() - 1);
+  // A registered session and an open owner connection first, so deeper paths are reached.
+  (void)sim::handle_encap(s, l, cip::encode_encap(cip::command::register_session, 0, {}, cip::register_session_data()), true, now);
+  switch (static_cast<std::uint8_t>(input[0]) % 4) {
+    case 0:
+    case 1: {
+      const auto out = sim::handle_encap(s, l, b, input[0] % 4 == 0, now);
+      if (out.reply && (out.reply->size() < cip::encap_header_size ||
+                        ((*out.reply)[2] | ((*out.reply)[3] << 8)) + cip::encap_header_size != out.reply->size()))
+        return "an encapsulation reply whose length field does not count its bytes";
+      break;
+    }
+    case 2: {
+      const auto r = sim::handle_cip(s, l, b, now);
+      if (!cip::decode_reply(r, 0).ok()) return "a CIP reply the client cannot decode";
+      break;
+    }
+    default: sim::consume_io(s, b, l.peer_ip, now); break;
+  }
+  (void)sim::produce_io(s, now + std::chrono::hours(1000));  // past the longest timeout (512 x 2^32 us)
+  if (!s.connections.empty()) return "a connection outlived its timeout";
+  return {};
 }
 
 }  // namespace edsc::fuzz

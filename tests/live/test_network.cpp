@@ -28,29 +28,27 @@ namespace edsc::live_test {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr const char* ns_prefix = "edsc-live-";
-
 bool run(const std::string& cmd) { return shell(cmd + " >/dev/null 2>&1").status == 0; }
 
 // Namespaces and links of test processes that are gone (killed mid-test).
-void remove_stale() {
+void remove_stale(const network_options& opt) {
   const auto list = shell("ip netns list 2>/dev/null").out;
-  const std::regex name(std::string(ns_prefix) + "([0-9]+)");
+  const std::regex name(opt.ns_prefix + "([0-9]+)(-([0-9]+))?");
   for (std::sregex_iterator it(list.begin(), list.end(), name), end; it != end; ++it) {
     const auto pid = std::stoi((*it)[1]);
     if (::kill(pid, 0) == 0 || errno == EPERM) continue;
     run("ip netns del " + it->str());
-    run("ip link del el" + std::to_string(pid) + "h");
+    run("ip link del " + opt.link_prefix + std::to_string(pid) + (*it)[3].str() + "h");
   }
 }
 
 // A /30 no interface of this host uses yet (the caller holds the lock).
-int free_subnet() {
+int free_subnet(const network_options& opt) {
   const auto addrs = shell("ip -o -4 addr show 2>/dev/null").out;
   std::set<int> used;
   const std::regex a(R"(198\.51\.100\.([0-9]+))");
   for (std::sregex_iterator it(addrs.begin(), addrs.end(), a), end; it != end; ++it) used.insert(std::stoi((*it)[1]) / 4);
-  for (int i = 1; i < 63; ++i)
+  for (int i = opt.first_subnet; i <= opt.last_subnet; ++i)
     if (!used.count(i)) return i;
   return -1;
 }
@@ -68,7 +66,7 @@ bool tcp_answers(const std::string& ip, int port) {
 
 }  // namespace
 
-std::unique_ptr<test_network> test_network::make(std::string& why) {
+std::unique_ptr<test_network> test_network::make(std::string& why, const network_options& opt) {
   if (::geteuid() != 0) {
     why = "not root: the live tests put the device in its own network namespace (CI runs them as root)";
     return nullptr;
@@ -86,20 +84,24 @@ std::unique_ptr<test_network> test_network::make(std::string& why) {
       if (fd >= 0) ::close(fd);
     }
   } unlock{lock};
-  remove_stale();
+  remove_stale(opt);
   std::unique_ptr<test_network> n(new test_network);
+  // Several networks of one process (the sim sweep) differ by a sequence number.
+  static int made = 0;
+  const auto seq = made++;
   const auto pid = std::to_string(::getpid());
-  n->ns = ns_prefix + pid;
-  n->host_if = "el" + pid + "h";
-  n->dev_if = "el" + pid + "d";
-  const int subnet = free_subnet();
+  const auto tail = seq == 0 ? std::string() : std::to_string(seq);
+  n->ns = opt.ns_prefix + pid + (seq == 0 ? std::string() : "-" + tail);
+  n->host_if = opt.link_prefix + pid + tail + "h";
+  n->dev_if = opt.link_prefix + pid + tail + "d";
+  const int subnet = free_subnet(opt);
   if (subnet < 0) {
     why = "no free /30 of 198.51.100.0/24 on this host";
     return nullptr;
   }
   n->host_ip = "198.51.100." + std::to_string(subnet * 4 + 1);
   n->device_ip = "198.51.100." + std::to_string(subnet * 4 + 2);
-  n->dir = (fs::temp_directory_path() / ("edsc-live-" + pid)).string();
+  n->dir = (fs::temp_directory_path() / n->ns).string();
   fs::create_directories(n->dir);
   const std::string in_ns = "ip netns exec " + n->ns + " ";
   const std::vector<std::string> steps = {
@@ -149,24 +151,29 @@ pid_t test_network::spawn(const std::vector<std::string>& argv, const std::strin
 }
 
 bool test_network::start_opener(const std::string& binary, std::string& why) {
-  const auto pid = spawn({binary, dev_if}, "opener.log");
+  return start_device({binary, dev_if}, "OpENer", why) > 0;
+}
+
+pid_t test_network::start_device(const std::vector<std::string>& argv, const std::string& what, std::string& why) {
+  const auto log = what + ".log";
+  const auto pid = spawn(argv, log);
   if (pid <= 0) {
-    why = "cannot start OpENer";
-    return false;
+    why = "cannot start " + what;
+    return -1;
   }
   // Generous: the device is not under the sanitizers, but the machine may be busy.
   for (int i = 0; i < 300; ++i) {
-    if (tcp_answers(device_ip, 44818)) return true;
+    if (tcp_answers(device_ip, 44818)) return pid;
     int st = 0;
     if (::waitpid(pid, &st, WNOHANG) == pid) {
       children_.erase(std::remove(children_.begin(), children_.end(), pid), children_.end());
-      why = "OpENer exited at start: " + shell("cat " + dir + "/opener.log").out;
-      return false;
+      why = what + " exited at start: " + shell("cat " + dir + "/" + log).out;
+      return -1;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
-  why = "OpENer does not answer on TCP 44818 after 15 s";
-  return false;
+  why = what + " does not answer on TCP 44818 after 15 s";
+  return -1;
 }
 
 void test_network::stop(pid_t pid, int first_signal) {

@@ -12,10 +12,19 @@
 
 namespace edsc::live_test {
 
+// Which names and addresses a suite uses, so suites running at once never
+// meet: tests/live takes the defaults, tests/sim its own prefix and
+// 198.51.100.64/26 (/30 numbers 16-31).
+struct network_options {
+  std::string ns_prefix = "edsc-live-";  // namespace: prefix, test pid, -sequence
+  std::string link_prefix = "el";        // veth: prefix, pid, sequence, h/d (at most 15 characters)
+  int first_subnet = 1, last_subnet = 62;  // /30 numbers of 198.51.100.0/24
+};
+
 class test_network {
  public:
   // Null with `why` set when namespaces cannot be made here (not root, no `ip`).
-  static std::unique_ptr<test_network> make(std::string& why);
+  static std::unique_ptr<test_network> make(std::string& why, const network_options& opt = {});
   ~test_network();
   test_network(const test_network&) = delete;
   test_network& operator=(const test_network&) = delete;
@@ -25,6 +34,9 @@ class test_network {
   pid_t spawn(const std::vector<std::string>& argv, const std::string& log_name);
   // Starts OpENer on the device's interface and waits until it answers on TCP 44818.
   bool start_opener(const std::string& binary, std::string& why);
+  // Starts `argv` in the namespace and waits until the device answers on TCP
+  // 44818; its pid, or -1 with `why` (`what` names it in messages).
+  pid_t start_device(const std::vector<std::string>& argv, const std::string& what, std::string& why);
   // `first_signal`, then SIGKILL after a grace period; reaps it.
   void stop(pid_t pid, int first_signal = 15);
 

@@ -22,7 +22,7 @@ using body = std::string (*)(std::string_view);
 const std::map<std::string, body> bodies = {
     {"parse", parse_body}, {"check", check_body}, {"fmt", fmt_body},         {"edit", edit_body},
     {"header", header_body}, {"lsp", lsp_body},   {"network", network_body}, {"diff", diff_body},
-    {"cip", cip_body}};
+    {"cip", cip_body}, {"sim", sim_body}};
 
 // Replays the files of tests/fuzz/<folder>/<target>/; returns how many.
 std::size_t replay(const std::string& target, body run, const char* folder = "regressions") {

@@ -1,0 +1,39 @@
+#pragma once
+// The device side of the wire format, replies out: the encapsulation replies
+// a target sends (ListIdentity, ListServices, errors), CIP replies with
+// their status, and the Connection Manager's replies. Each is the inverse of
+// a decoder the client uses, so the two are tested against each other.
+#include <cstdint>
+#include <span>
+
+#include "cip/bytes.hpp"
+#include "cip/connection_manager.hpp"
+#include "cip/encap.hpp"
+
+namespace edsc::cip {
+
+// A reply header with `status` (requests always carry 0).
+[[nodiscard]] bytes encode_encap_reply(std::uint16_t cmd, std::uint32_t session, std::uint32_t status,
+                                       const sender_context& context, byte_view data);
+// An error reply: the header alone, with `status`.
+[[nodiscard]] bytes encap_reply_header_only(std::uint16_t cmd, std::uint32_t session, std::uint32_t status,
+                                            const sender_context& context);
+
+// Identity attributes 1-7 in wire order, then the state (attribute 8).
+void put_identity_fields(bytes& b, const identity& id);
+// ListIdentity reply data: one identity item with the socket address.
+[[nodiscard]] bytes list_identity_reply(const identity& id);
+// ListServices reply data: the one "Communications" service, CIP over TCP and UDP class 0/1.
+[[nodiscard]] bytes list_services_reply();
+
+// Reply service (request | 0x80), reserved, general status, additional status words, data.
+[[nodiscard]] bytes encode_reply(std::uint8_t request_service, std::uint8_t general,
+                                 std::span<const std::uint16_t> additional = {}, byte_view data = {});
+
+[[nodiscard]] bytes forward_open_ok_data(const forward_open_reply& r);
+// The data of a refused Forward_Open or Forward_Close and of a Forward_Close
+// reply: connection serial, originator vendor and serial, then a size byte
+// (remaining path, application reply) of 0 and a reserved byte.
+[[nodiscard]] bytes connection_triple_data(std::uint16_t serial, std::uint16_t vendor, std::uint32_t originator_serial);
+
+}  // namespace edsc::cip

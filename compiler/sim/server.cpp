@@ -1,0 +1,177 @@
+#include "sim/server.hpp"
+
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/resource.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "live/socket.hpp"
+
+namespace edsc::sim {
+
+namespace {
+
+struct client {
+  live::fd sock;
+  link l;
+  cip::bytes in;
+  clock::time_point last{};
+};
+
+constexpr std::size_t max_clients = 64;
+constexpr std::size_t max_message = cip::encap_header_size + 0xFFFF;
+
+std::string bind_error(const char* what, const std::string& addr, std::uint16_t port) {
+  return fmt::format("cannot bind {} {}:{}: {}", what, addr, port, std::strerror(errno));
+}
+
+live::fd open_socket(int type, const sockaddr_in& at) {
+  live::fd s(::socket(AF_INET, type | SOCK_NONBLOCK | SOCK_CLOEXEC, 0));
+  if (!s.valid()) return s;
+  const int one = 1;
+  ::setsockopt(s.get(), SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+  if (::bind(s.get(), reinterpret_cast<const sockaddr*>(&at), sizeof at) != 0) return live::fd();
+  if (type == SOCK_STREAM && ::listen(s.get(), 16) != 0) return live::fd();
+  return s;
+}
+
+// A reply that does not fit the socket's buffer at once ends the client:
+// a scanner reads its replies, one that does not is not served.
+bool send_reply(int sock, const cip::bytes& b) {
+  const auto n = ::send(sock, b.data(), b.size(), MSG_NOSIGNAL);
+  return n == static_cast<ssize_t>(b.size());
+}
+
+void handle_client(state& s, client& c, bool& drop, clock::time_point now) {
+  std::uint8_t buf[4096];
+  const auto n = ::recv(c.sock.get(), buf, sizeof buf, 0);
+  if (n == 0 || (n < 0 && errno != EAGAIN && errno != EINTR)) {
+    drop = true;
+    return;
+  }
+  if (n < 0) return;
+  c.last = now;
+  c.in.insert(c.in.end(), buf, buf + n);
+  while (c.in.size() >= cip::encap_header_size && !drop) {
+    const std::size_t len = c.in[2] | (c.in[3] << 8);
+    const auto total = cip::encap_header_size + len;
+    if (c.in.size() < total) break;
+    const auto out = handle_encap(s, c.l, cip::byte_view(c.in.data(), total), true, now);
+    if (out.reply && !send_reply(c.sock.get(), *out.reply)) drop = true;
+    if (out.close) drop = true;
+    c.in.erase(c.in.begin(), c.in.begin() + static_cast<std::ptrdiff_t>(total));
+  }
+  if (c.in.size() > max_message) drop = true;
+}
+
+}  // namespace
+
+std::string serve(state& s, const server_options& opt, const std::atomic<bool>& stop,
+                  const std::function<void(const std::string&)>& emit) {
+  sockaddr_in at{};
+  at.sin_family = AF_INET;
+  if (::inet_pton(AF_INET, opt.address.c_str(), &at.sin_addr) != 1)
+    return fmt::format("--address {}: not an IPv4 address", opt.address);
+  at.sin_port = htons(opt.port);
+  auto tcp = open_socket(SOCK_STREAM, at);
+  if (!tcp.valid()) return bind_error("TCP", opt.address, opt.port);
+  auto udp = open_socket(SOCK_DGRAM, at);
+  if (!udp.valid()) return bind_error("UDP", opt.address, opt.port);
+  sockaddr_in io_at = at;
+  io_at.sin_port = htons(opt.io_port);
+  auto io = open_socket(SOCK_DGRAM, io_at);
+  if (!io.valid()) return bind_error("UDP (class 1 I/O)", opt.address, opt.io_port);
+  emit(fmt::format("{{\"event\":\"listening\",\"address\":\"{}\",\"port\":{},\"io_port\":{},\"connection_points\":{},"
+                   "\"assemblies\":{}}}",
+                   opt.address, opt.port, opt.io_port, s.dev.points.size(), s.dev.assemblies.size()));
+
+  std::vector<client> clients;
+  std::uint64_t produced = 0;
+  const auto idle = std::chrono::seconds(opt.idle_tcp_s);
+  auto flush_log = [&] {
+    for (const auto& line : s.log) emit(line);
+    s.log.clear();
+  };
+  while (!stop.load()) {
+    auto now = clock::now();
+    for (const auto& f : produce_io(s, now)) {
+      sockaddr_in to{};
+      to.sin_family = AF_INET;
+      to.sin_port = htons(opt.io_port);
+      to.sin_addr.s_addr = f.ip;
+      if (::sendto(io.get(), f.frame.data(), f.frame.size(), 0, reinterpret_cast<const sockaddr*>(&to), sizeof to) > 0)
+        ++produced;
+    }
+    flush_log();
+    // Wake for the next frame or timeout, and at least every 100 ms to see `stop`.
+    auto wake = clock::now() + std::chrono::milliseconds(100);
+    if (const auto d = next_deadline(s); d && *d < wake) wake = *d;
+    const auto wait = std::chrono::duration_cast<std::chrono::microseconds>(wake - clock::now()).count();
+    std::vector<pollfd> fds = {{tcp.get(), POLLIN, 0}, {udp.get(), POLLIN, 0}, {io.get(), POLLIN, 0}};
+    for (const auto& c : clients) fds.push_back({c.sock.get(), POLLIN, 0});
+    // ppoll for sub-millisecond RPIs; a negative wait means a deadline is already due.
+    timespec ts{0, wait > 0 ? static_cast<long>(wait % 1'000'000) * 1000 : 0};
+    ts.tv_sec = wait > 0 ? wait / 1'000'000 : 0;
+    const int ready = ::ppoll(fds.data(), fds.size(), &ts, nullptr);
+    if (ready < 0 && errno != EINTR) return fmt::format("poll failed: {}", std::strerror(errno));
+    now = clock::now();
+    if (ready > 0) {
+      if (fds[0].revents & POLLIN) {
+        sockaddr_in peer{};
+        socklen_t len = sizeof peer;
+        live::fd c(::accept4(tcp.get(), reinterpret_cast<sockaddr*>(&peer), &len, SOCK_NONBLOCK | SOCK_CLOEXEC));
+        if (c.valid() && clients.size() < max_clients) clients.push_back({std::move(c), {peer.sin_addr.s_addr, 0}, {}, now});
+      }
+      if (fds[1].revents & POLLIN) {
+        std::uint8_t buf[2048];
+        sockaddr_in peer{};
+        socklen_t len = sizeof peer;
+        const auto n = ::recvfrom(udp.get(), buf, sizeof buf, 0, reinterpret_cast<sockaddr*>(&peer), &len);
+        if (n > 0) {
+          link l{peer.sin_addr.s_addr, 0};
+          const auto out = handle_encap(s, l, cip::byte_view(buf, static_cast<std::size_t>(n)), false, now);
+          if (out.reply)
+            (void)::sendto(udp.get(), out.reply->data(), out.reply->size(), 0, reinterpret_cast<sockaddr*>(&peer), len);
+        }
+      }
+      if (fds[2].revents & POLLIN)
+        for (int i = 0; i < 64; ++i) {  // drain what is there, boundedly
+          std::uint8_t buf[2048];
+          sockaddr_in peer{};
+          socklen_t len = sizeof peer;
+          const auto n = ::recvfrom(io.get(), buf, sizeof buf, 0, reinterpret_cast<sockaddr*>(&peer), &len);
+          if (n <= 0) break;
+          consume_io(s, cip::byte_view(buf, static_cast<std::size_t>(n)), peer.sin_addr.s_addr, now);
+        }
+      for (std::size_t i = 0; i + 3 < fds.size(); ++i) {  // clients accepted just now wait a turn
+        bool drop = false;
+        if (fds[3 + i].revents & (POLLIN | POLLHUP | POLLERR)) handle_client(s, clients[i], drop, now);
+        if (drop) clients[i].sock = live::fd();
+      }
+    }
+    for (auto& c : clients)
+      if (now - c.last > idle) c.sock = live::fd();
+    std::erase_if(clients, [](const client& c) { return !c.sock.valid(); });
+    flush_log();
+  }
+  rusage ru{};
+  ::getrusage(RUSAGE_SELF, &ru);
+  const double cpu = static_cast<double>(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) +
+                     static_cast<double>(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec) / 1e6;
+  std::uint64_t late = 0;
+  for (const auto& c : s.connections) late += c.late;
+  emit(fmt::format("{{\"event\":\"stopped\",\"produced\":{},\"late\":{},\"open_connections\":{},\"cpu_s\":{:.3f}}}",
+                   produced, late, s.connections.size(), cpu));
+  return {};
+}
+
+}  // namespace edsc::sim

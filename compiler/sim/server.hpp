@@ -1,0 +1,27 @@
+#pragma once
+// The simulator's thin socket loop: TCP and UDP on the encapsulation port,
+// UDP 2222 for class 1 I/O, one poll() bounded by the next frame or timeout
+// due. Everything it answers comes from the pure functions of state.hpp.
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "sim/state.hpp"
+
+namespace edsc::sim {
+
+struct server_options {
+  std::string address = "0.0.0.0";
+  std::uint16_t port = 44818;
+  std::uint16_t io_port = 2222;
+  // Seconds a TCP connection may stay silent before it is closed.
+  int idle_tcp_s = 120;
+};
+
+// Serves until `stop` turns true; each JSON line of the state's log goes to
+// `emit`. The error when a socket cannot be opened, else empty.
+[[nodiscard]] std::string serve(state& s, const server_options& opt, const std::atomic<bool>& stop,
+                                const std::function<void(const std::string&)>& emit);
+
+}  // namespace edsc::sim

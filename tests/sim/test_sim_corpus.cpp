@@ -1,0 +1,86 @@
+// Every EtherNet/IP file of both corpora with connections, served by `edsc
+// sim` in a test namespace and checked by `edsc verify --live --connections`:
+// each passes, except the reviewed list in corpus_not_served.txt (which must
+// stay true both ways). One namespace per corpus, the simulator restarted
+// per file, short timeouts: the run time stays bounded.
+#include <gtest/gtest.h>
+
+#include <signal.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+
+#include "sim_network.hpp"
+
+namespace edsc::sim_test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::map<std::string, std::string> not_served() {
+  std::map<std::string, std::string> out;
+  std::ifstream in(std::string(EDSC_TESTS_DIR) + "/sim/corpus_not_served.txt");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    const auto colon = line.find(".eds:");
+    if (colon != std::string::npos) out[line.substr(0, colon + 4)] = line.substr(colon + 5);
+  }
+  return out;
+}
+
+// Files with at least one ConnectionN (EtherNet/IP I/O), in name order.
+std::vector<fs::path> files_with_connections(const std::string& dir) {
+  std::vector<fs::path> out;
+  const std::regex connection(R"(^\s*Connection[0-9]+\s*=)", std::regex::multiline);
+  for (const auto& e : fs::directory_iterator(dir)) {
+    if (e.path().extension() != ".eds") continue;
+    std::ifstream in(e.path());
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (std::regex_search(text, connection)) out.push_back(e.path());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+void sweep(const std::string& dir) {
+  std::string why;
+  auto net = make_sim_network(why);
+  if (!net) GTEST_SKIP() << why;
+  const auto reviewed = not_served();
+  unsigned served = 0, listed = 0;
+  for (const auto& f : files_with_connections(dir)) {
+    const auto name = f.filename().string();
+    const bool expect_fail = reviewed.count(name) > 0;
+    const auto pid = start_sim(*net, f.string(), why);
+    int status = -1;
+    std::string output;
+    if (pid > 0) {
+      const auto r = run_edsc("verify --live " + net->device_ip + " " + quoted(f.string()) +
+                              " --connections --timeout 0.3 --color never", 60);
+      status = r.status;
+      output = r.output;
+      net->stop(pid, SIGTERM);
+    } else {
+      output = why;
+    }
+    if (expect_fail) {
+      ++listed;
+      EXPECT_NE(status, 0) << name << " is listed in corpus_not_served.txt (" << reviewed.at(name)
+                           << ") but now passes: remove it from the list";
+    } else {
+      EXPECT_EQ(status, 0) << name << " is not served:\n" << output;
+      served += status == 0;
+    }
+  }
+  std::printf("%s: %u files served and verified, %u listed as not served\n", dir.c_str(), served, listed);
+}
+
+TEST(sim_corpus, every_connection_file_of_the_corpus_is_served) { sweep(EDSC_CORPUS_DIR); }
+TEST(sim_corpus, every_connection_file_of_the_rockwell_corpus_is_served) { sweep(EDSC_CORPUS_ROCKWELL_DIR); }
+
+}  // namespace
+}  // namespace edsc::sim_test
