@@ -54,11 +54,18 @@ std::vector<std::string> options_of(const std::string& path) {
   return out;
 }
 
+// Every section of docs/cli.md titled for the command (`edsc verify ...` and
+// `edsc verify --live ...` are both verify's), joined.
 std::string section_of(const std::string& doc, const std::string& path) {
-  const auto title = doc.find("\n## `edsc " + path);
-  if (title == std::string::npos) return {};
-  const auto end = doc.find("\n## ", title + 1);
-  return doc.substr(title, end == std::string::npos ? std::string::npos : end - title);
+  std::string out;
+  const std::string title = "\n## `edsc " + path;
+  for (auto at = doc.find(title); at != std::string::npos; at = doc.find(title, at + 1)) {
+    const char next = at + title.size() < doc.size() ? doc[at + title.size()] : '\n';
+    if (next != ' ' && next != '`') continue;  // "edsc net" must not match "edsc netmap"
+    const auto end = doc.find("\n## ", at + 1);
+    out += doc.substr(at, end == std::string::npos ? std::string::npos : end - at);
+  }
+  return out;
 }
 
 TEST(CliReference, EveryCommandAndOptionOfHelpIsInCliMd) {
