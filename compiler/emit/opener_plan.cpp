@@ -29,7 +29,17 @@ span where_of(const model::connection& c, const model::value& field) {
 std::string path_problem(const model::device& dev, const model::connection& c, const eip_connection_facts& f) {
   const auto* p = dev.path_of(c.path);
   if (p == nullptr) return "it has no path OpENer could match a Forward_Open against";
+  bool instance_seen = false;
   for (const auto& s : p->segments) {
+    // OpENer reads one instance (configuration) and then connection points
+    // (0x2C); a second instance segment it refuses (0x0315, measured).
+    if (s.kind == model::segment_kind::instance) {
+      if (instance_seen)
+        return fmt::format("its path names instance {} with a 0x24 segment where OpENer expects a connection point "
+                           "(0x2C); OpENer refuses it with 0x0315",
+                           s.value);
+      instance_seen = true;
+    }
     switch (s.kind) {
       case model::segment_kind::class_id:
         if (s.value_known() && s.value != 0x04)
@@ -80,9 +90,10 @@ class planner {
       report(diag_id::opener_connection_path, where_of(*c, c->path), fmt::format("Connection{}: {}", f.number, why));
       return;
     }
-    if (!assembly(*c, f.input_instance, f.input_size, "input", c->to_size) ||
-        !assembly(*c, f.output_instance, f.output_size, "output", c->ot_size) ||
-        !assembly(*c, f.config_instance, f.config_size, "configuration", c->target_config_size))
+    if (!assembly(*c, f.input_instance, f.input_size, "input", c->to_size, c->to_format) ||
+        !assembly(*c, f.output_instance, f.output_size, "output", c->ot_size, c->ot_format) ||
+        !assembly(*c, f.config_instance, f.config_size, "configuration", c->target_config_size,
+                  c->target_config_format))
       return;
     opener_point p;
     p.kind = tt.exclusive_owner ? opener_point_kind::exclusive_owner
@@ -126,8 +137,20 @@ class planner {
 
   // One buffer per instance: the first connection giving it data fixes its size.
   bool assembly(const model::connection& c, std::uint32_t instance, std::uint32_t size, const char* role,
-                const model::value& size_field) {
+                const model::value& size_field, const model::value& format) {
     if (instance == 0) return true;
+    // The Assembly object reports the [Assembly] entry's size (attribute 4)
+    // and OpENer holds one buffer: the two sizes must agree.
+    if (const auto* a = assembly_of(dev_, format); a != nullptr && size > 0) {
+      const auto declared = assembly_size(dev_, a);
+      if (declared > 0 && declared != size) {
+        report(diag_id::opener_assembly_size, where_of(c, size_field),
+               fmt::format("Connection{}: the {} has {} bytes but the assembly it names has {}; OpENer holds one "
+                           "buffer per instance",
+                           c.number, role, size, declared));
+        return false;
+      }
+    }
     if (size > opener_max_assembly_bytes) {
       report(diag_id::opener_assembly_size, where_of(c, size_field),
              fmt::format("Connection{}: the {} assembly {} has {} bytes; an OpENer I/O frame holds at most {}",

@@ -45,7 +45,7 @@ const char* kind_call(opener_point_kind k) {
 
 std::string identity_cmake(const opener_plan& p) {
   const auto& id = p.identity;
-  std::string s = banner(p, "", "#", "");
+  std::string s = banner(p, "#", "#", "");
   s += "# OpENer's identity cache variables (its CMakeLists.txt, devicedata.h.in); use with `cmake -C`.\n";
   s += "# The name is the inside of a C string literal: devicedata.h pastes it between quotes.\n";
   const auto var = [&](const char* name, const std::string& value, const char* doc) {
@@ -274,7 +274,7 @@ EDSC_WEAK void edsc_app_cyclic(void) {}
 }
 
 std::string project_cmake(const opener_plan& p) {
-  std::string s = banner(p, "", "#", "");
+  std::string s = banner(p, "#", "#", "");
   s += fmt::format(R"cmake(# A ready project: OpENer's POSIX port with this folder's application instead
 # of its sample, from an unmodified OpENer tree:
 #   cmake -S DIR -B BUILD -DOPENER_SOURCE_DIR=path/to/OpENer/source && cmake --build BUILD

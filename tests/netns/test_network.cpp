@@ -1,4 +1,4 @@
-#include "test_network.hpp"
+#include "netns/test_network.hpp"
 
 #include <arpa/inet.h>
 #include <fcntl.h>
@@ -19,7 +19,7 @@
 #include <set>
 #include <thread>
 
-#include "live_support.hpp"
+#include "netns/live_support.hpp"
 
 extern char** environ;
 
@@ -28,29 +28,28 @@ namespace edsc::live_test {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr const char* ns_prefix = "edsc-live-";
 
 bool run(const std::string& cmd) { return shell(cmd + " >/dev/null 2>&1").status == 0; }
 
 // Namespaces and links of test processes that are gone (killed mid-test).
-void remove_stale() {
+void remove_stale(const network_kind& kind) {
   const auto list = shell("ip netns list 2>/dev/null").out;
-  const std::regex name(std::string(ns_prefix) + "([0-9]+)");
+  const std::regex name(kind.name_prefix + "([0-9]+)");
   for (std::sregex_iterator it(list.begin(), list.end(), name), end; it != end; ++it) {
     const auto pid = std::stoi((*it)[1]);
     if (::kill(pid, 0) == 0 || errno == EPERM) continue;
     run("ip netns del " + it->str());
-    run("ip link del el" + std::to_string(pid) + "h");
+    run("ip link del " + kind.link_prefix + std::to_string(pid) + "h");
   }
 }
 
 // A /30 no interface of this host uses yet (the caller holds the lock).
-int free_subnet() {
+int free_subnet(const network_kind& kind) {
   const auto addrs = shell("ip -o -4 addr show 2>/dev/null").out;
   std::set<int> used;
   const std::regex a(R"(198\.51\.100\.([0-9]+))");
   for (std::sregex_iterator it(addrs.begin(), addrs.end(), a), end; it != end; ++it) used.insert(std::stoi((*it)[1]) / 4);
-  for (int i = 1; i < 63; ++i)
+  for (int i = kind.first_subnet; i <= kind.last_subnet && i < 64; ++i)
     if (!used.count(i)) return i;
   return -1;
 }
@@ -68,7 +67,7 @@ bool tcp_answers(const std::string& ip, int port) {
 
 }  // namespace
 
-std::unique_ptr<test_network> test_network::make(std::string& why) {
+std::unique_ptr<test_network> test_network::make(std::string& why, const network_kind& kind) {
   if (::geteuid() != 0) {
     why = "not root: the live tests put the device in its own network namespace (CI runs them as root)";
     return nullptr;
@@ -86,20 +85,20 @@ std::unique_ptr<test_network> test_network::make(std::string& why) {
       if (fd >= 0) ::close(fd);
     }
   } unlock{lock};
-  remove_stale();
+  remove_stale(kind);
   std::unique_ptr<test_network> n(new test_network);
   const auto pid = std::to_string(::getpid());
-  n->ns = ns_prefix + pid;
-  n->host_if = "el" + pid + "h";
-  n->dev_if = "el" + pid + "d";
-  const int subnet = free_subnet();
+  n->ns = kind.name_prefix + pid;
+  n->host_if = kind.link_prefix + pid + "h";
+  n->dev_if = kind.link_prefix + pid + "d";
+  const int subnet = free_subnet(kind);
   if (subnet < 0) {
-    why = "no free /30 of 198.51.100.0/24 on this host";
+    why = "no free /30 of 198.51.100.0/24 in this folder's range on this host";
     return nullptr;
   }
   n->host_ip = "198.51.100." + std::to_string(subnet * 4 + 1);
   n->device_ip = "198.51.100." + std::to_string(subnet * 4 + 2);
-  n->dir = (fs::temp_directory_path() / ("edsc-live-" + pid)).string();
+  n->dir = (fs::temp_directory_path() / (kind.name_prefix + pid)).string();
   fs::create_directories(n->dir);
   const std::string in_ns = "ip netns exec " + n->ns + " ";
   const std::vector<std::string> steps = {
