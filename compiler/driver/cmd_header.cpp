@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "driver/choice.hpp"
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
 #include "diag/render_text.hpp"
@@ -155,8 +156,7 @@ void register_header(CLI::App& app, command_action& run) {
   cmd->add_option("--prefix", cli->prefix, "Prefix of every macro (a C identifier, may be empty)")
       ->default_str("EDS_");
   cmd->add_option("--serial", cli->serial, "Serial number (decimal or 0x...); else the build defines it");
-  cmd->add_option("--stack", cli->stack, "Generate a ready project for this stack instead; -o names its folder")
-      ->check(CLI::IsMember({"opener"}));
+  add_choice(cmd, "--stack", cli->stack, {"opener"}, "Generate a ready project for this stack instead; -o names its folder");
   cmd->add_option("--template-dir", cli->template_dir, "Folder whose *.mustache files replace the built-in ones");
   cmd->callback([&run, cli] { run = [cli] { return run_header(*cli); }; });
 }
