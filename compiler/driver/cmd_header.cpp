@@ -4,9 +4,12 @@
 
 #include <fmt/format.h>
 
+#include "driver/choice.hpp"
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
+#include "diag/render_text.hpp"
 #include "emit/header_view.hpp"
+#include "emit/opener_plan.hpp"
 #include "io/read_file.hpp"
 #include "io/output_target.hpp"
 #include "lower/lower.hpp"
@@ -17,8 +20,59 @@ namespace edsc::driver {
 namespace {
 
 struct header_cli {
-  std::string input, output, prefix = "EDS_", serial, template_dir, stdin_name;
+  std::string input, output, prefix = "EDS_", serial, template_dir, stdin_name, stack;
 };
+
+// `--stack opener`: OUT is a folder that becomes a ready OpENer project
+// (docs/header.md, "OpENer"). Nothing is written when OpENer cannot serve the EDS.
+int run_stack_opener(const header_cli& cli) {
+  if (io::is_stdin(cli.input) || io::is_stdout(cli.output)) {
+    print_error("--stack opener reads a file and writes a folder: neither can be '-'");
+    return exit_failure;
+  }
+  const auto input_file = read_or_report(cli.input);
+  if (!input_file) return exit_failure;
+  const auto& src = *input_file;
+  const auto parsed = parse(src);
+  if (report_not_text(parsed, src)) return exit_findings;
+  diagnostics diags;
+  const auto dev = lower(parsed.tree, diags);
+  diags.clear();  // `edsc check` reports the file's own findings; these are OpENer's
+  std::vector<emit::header_issue> issues;
+  const auto plan = emit::plan_opener(dev, src, diags, issues);
+  std::string report;
+  for (const auto& d : diags) render_text(src, d, text_style{use_color(color_mode::auto_detect, stderr)}, report);
+  for (const auto& issue : issues)
+    report += fmt::format("{}: {}: {}\n", src.path(), issue.error ? "error" : "warning", issue.message);
+  write_all(stderr, report);
+  bool error = count_at_least(diags, severity::error) > 0;
+  for (const auto& issue : issues) error = error || issue.error;
+  if (error) {
+    print_error(fmt::format("OpENer cannot serve {}: nothing written to {}", src.path(), cli.output));
+    return exit_findings;
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(cli.output, ec);
+  if (ec) {
+    print_error(fmt::format("cannot create {}: {}", cli.output, ec.message()));
+    return exit_failure;
+  }
+  const auto files = emit::render_opener(plan);
+  // The output policy (docs/cli.md): no generated file may land on the input.
+  for (const auto& f : files)
+    if (refuse_input_as_output((std::filesystem::path(cli.output) / f.name).string(), {cli.input}) != exit_ok)
+      return exit_failure;
+  for (const auto& f : files) {
+    const auto path = (std::filesystem::path(cli.output) / f.name).string();
+    // A file that already holds these bytes keeps its time: the build that
+    // regenerates on every configure then rebuilds only what changed.
+    if (const auto old = io::read_source(path); std::holds_alternative<std::unique_ptr<source_file>>(old) &&
+                                                 std::get<std::unique_ptr<source_file>>(old)->text() == f.text)
+      continue;
+    if (write_result(path, f.text) != exit_ok) return exit_failure;
+  }
+  return exit_ok;
+}
 
 // Decimal or 0x-hexadecimal, at most 32 bits (Identity attribute 6 is a UDINT).
 std::optional<std::uint32_t> parse_serial(const std::string& s) {
@@ -39,6 +93,7 @@ std::optional<std::uint32_t> parse_serial(const std::string& s) {
 }
 
 int run_header(const header_cli& cli) {
+  if (cli.stack == "opener") return run_stack_opener(cli);
   emit::header_options opt;
   opt.prefix = cli.prefix;
   opt.template_dir = cli.template_dir;
@@ -85,10 +140,11 @@ void register_header(CLI::App& app, command_action& run) {
   auto* cmd = app.add_subcommand("header", "Generate the C header firmware needs from one EDS file (docs/header.md)");
   cmd->add_option("input", cli->input, "The EDS file ('-': standard input)")->required();
   add_stdin_filename(cmd, cli->stdin_name);
-  cmd->add_option("-o,--output", cli->output, "The header to write ('-' for standard output)")->required();
+  cmd->add_option("-o,--output", cli->output, "The header to write ('-' for standard output); with --stack, a folder")->required();
   cmd->add_option("--prefix", cli->prefix, "Prefix of every macro (a C identifier, may be empty)")
       ->default_str("EDS_");
   cmd->add_option("--serial", cli->serial, "Serial number (decimal or 0x...); else the build defines it");
+  add_choice(cmd, "--stack", cli->stack, {"opener"}, "Generate a ready project for this stack instead; -o names its folder");
   cmd->add_option("--template-dir", cli->template_dir, "Folder whose *.mustache files replace the built-in ones");
   cmd->callback([&run, cli] { run = [cli] { return run_header(*cli); }; });
 }

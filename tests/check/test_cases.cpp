@@ -104,6 +104,9 @@ TEST(check_cases, every_rule_has_a_triggering_case) {
       // A live EtherNet/IP device's answers: tests/live/ (OpENer, and a hostile server).
       "live-identity", "live-minor-revision", "live-product-name", "live-assembly-size", "live-connection-refused",
       "live-io-frames", "live-io-rate", "live-not-checked",
+      // What OpENer cannot serve (`edsc header --stack opener`): tests/stack/ and scripts/opener-coverage.
+      "opener-connection-kind", "opener-connection-path", "opener-assembly-size", "opener-run-idle",
+      "opener-no-connection",
   };
   std::set<std::string_view> seen;
   for (const auto& path : case_files()) {

@@ -7,7 +7,7 @@
 #include "cip/io_frame.hpp"
 #include "cip/message.hpp"
 #include "cip/status.hpp"
-#include "live_support.hpp"
+#include "netns/live_support.hpp"
 
 namespace edsc::cip {
 namespace {

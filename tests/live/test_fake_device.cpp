@@ -10,9 +10,9 @@
 
 #include "cip/encap.hpp"
 #include "cip/io_frame.hpp"
-#include "live_support.hpp"
+#include "netns/live_support.hpp"
 #include "loopback_server.hpp"
-#include "run_edsc.hpp"
+#include "netns/run_edsc.hpp"
 
 namespace edsc::live_test {
 namespace {

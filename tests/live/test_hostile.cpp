@@ -16,7 +16,7 @@
 
 #include "cip/encap.hpp"
 #include "loopback_server.hpp"
-#include "run_edsc.hpp"
+#include "netns/run_edsc.hpp"
 
 namespace edsc::live_test {
 namespace {

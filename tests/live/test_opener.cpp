@@ -14,8 +14,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "run_edsc.hpp"
-#include "test_network.hpp"
+#include "netns/run_edsc.hpp"
+#include "netns/test_network.hpp"
 
 namespace edsc::live_test {
 namespace {

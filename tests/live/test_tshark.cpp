@@ -10,7 +10,7 @@
 #include "cip/encap.hpp"
 #include "cip/io_frame.hpp"
 #include "cip/message.hpp"
-#include "live_support.hpp"
+#include "netns/live_support.hpp"
 #include "pcap_writer.hpp"
 
 namespace edsc::live_test {

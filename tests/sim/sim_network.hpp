@@ -1,12 +1,12 @@
 #pragma once
-// `edsc sim` in a network namespace of its own: tests/live's helper with this
+// `edsc sim` in a network namespace of its own: tests/netns's helper with this
 // suite's names ("edsc-sim-", veth "es...") and addresses (198.51.100.64/26),
 // so it never meets tests/live or another suite running at the same time.
 #include <memory>
 #include <string>
 
-#include "live/run_edsc.hpp"
-#include "live/test_network.hpp"
+#include "netns/run_edsc.hpp"
+#include "netns/test_network.hpp"
 
 namespace edsc::sim_test {
 

@@ -11,7 +11,7 @@
 #include "cip/io_frame.hpp"
 #include "cip/message.hpp"
 #include "edit/analyze.hpp"
-#include "live/live_support.hpp"
+#include "netns/live_support.hpp"
 #include "sim/state.hpp"
 
 namespace edsc::sim {

@@ -1,6 +1,8 @@
 #pragma once
 // A device in its own network namespace behind a veth pair, with a /30 of
-// TEST-NET-2 (198.51.100.0/24) of its own (ETHERNETIP_LIVE.md §2). Names
+// TEST-NET-2 (198.51.100.0/24) of its own (ETHERNETIP_LIVE.md §2). Shared by
+// tests/live and tests/stack; each folder names its own and takes /30s from
+// its own half of the range. Names
 // carry the test process id, so parallel tests do not meet and a later run
 // removes what a killed one left. The destructor stops the device and
 // removes the namespace and the link, also when the test fails.
@@ -18,7 +20,9 @@ namespace edsc::live_test {
 struct network_options {
   std::string ns_prefix = "edsc-live-";  // namespace: prefix, test pid, -sequence
   std::string link_prefix = "el";        // veth: prefix, pid, sequence, h/d (at most 15 characters)
-  int first_subnet = 1, last_subnet = 62;  // /30 numbers of 198.51.100.0/24
+  // /30 numbers of 198.51.100.0/24: tests/live 1-15, tests/sim 16-31,
+  // tests/stack 32-62, so suites running at once never share one.
+  int first_subnet = 1, last_subnet = 15;
 };
 
 class test_network {

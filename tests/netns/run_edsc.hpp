@@ -5,7 +5,7 @@
 #include <chrono>
 #include <string>
 
-#include "live_support.hpp"
+#include "netns/live_support.hpp"
 
 namespace edsc::live_test {
 

@@ -1,4 +1,4 @@
-#include "test_network.hpp"
+#include "netns/test_network.hpp"
 
 #include <arpa/inet.h>
 #include <fcntl.h>
@@ -19,7 +19,7 @@
 #include <set>
 #include <thread>
 
-#include "live_support.hpp"
+#include "netns/live_support.hpp"
 
 extern char** environ;
 
@@ -96,7 +96,7 @@ std::unique_ptr<test_network> test_network::make(std::string& why, const network
   n->dev_if = opt.link_prefix + pid + tail + "d";
   const int subnet = free_subnet(opt);
   if (subnet < 0) {
-    why = "no free /30 of 198.51.100.0/24 on this host";
+    why = "no free /30 of 198.51.100.0/24 in this folder's range on this host";
     return nullptr;
   }
   n->host_ip = "198.51.100." + std::to_string(subnet * 4 + 1);

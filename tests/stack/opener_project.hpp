@@ -1,0 +1,53 @@
+#pragma once
+// Building a device from an EDS the way a user would: `edsc header --stack
+// opener FILE -o DIR`, then `cmake -S DIR -B BUILD` against the shared,
+// unmodified OpENer tree. One build folder per device, kept between runs
+// and compiled through ccache, so a rerun rebuilds only what changed.
+#include <chrono>
+#include <filesystem>
+#include <string>
+
+#include "netns/live_support.hpp"
+#include "netns/run_edsc.hpp"
+
+namespace edsc::stack_test {
+
+using live_test::quoted;
+using live_test::run_edsc;
+using live_test::shell;
+
+struct device_build {
+  bool ok = false;
+  std::string log, binary;
+  double generate_s = 0, build_s = 0;
+};
+
+inline std::string stack_root() { return EDSC_STACK_BUILD_DIR; }
+
+// Generates into <root>/<name>/gen and builds in <root>/<name>/build (warnings
+// in the generated application are errors there).
+inline device_build build_device(const std::string& name, const std::string& eds) {
+  namespace fs = std::filesystem;
+  device_build b;
+  const auto dir = fs::path(stack_root()) / name;
+  const auto gen = (dir / "gen").string(), build = (dir / "build").string();
+  fs::create_directories(dir);
+  const auto g = run_edsc("header --stack opener " + quoted(eds) + " -o " + quoted(gen));
+  b.generate_s = g.seconds;
+  b.log = g.output;
+  if (g.status != 0) return b;
+  const auto start = std::chrono::steady_clock::now();
+  const auto ccache = shell("command -v ccache").status == 0 ? " -DCMAKE_C_COMPILER_LAUNCHER=ccache" : "";
+  // One job: the suite runs beside other builds on a shared machine.
+  const auto r = shell("cmake -S " + quoted(gen) + " -B " + quoted(build) + " -DOPENER_SOURCE_DIR=" +
+                       quoted(EDSC_OPENER_SOURCE_DIR) + " -DCMAKE_BUILD_TYPE=Release -DEDSC_OPENER_WERROR=ON" +
+                       ccache + " >" + quoted(build + ".log") + " 2>&1 && cmake --build " + quoted(build) +
+                       " -j1 >>" + quoted(build + ".log") + " 2>&1");
+  b.build_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  b.log += shell("tail -c 4000 " + quoted(build + ".log")).out;
+  b.binary = build + "/opener/src/ports/POSIX/OpENer";
+  b.ok = r.status == 0 && fs::exists(b.binary);
+  return b;
+}
+
+}  // namespace edsc::stack_test
