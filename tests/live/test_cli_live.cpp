@@ -2,7 +2,7 @@
 // errors that need no device.
 #include <gtest/gtest.h>
 
-#include "run_edsc.hpp"
+#include "netns/run_edsc.hpp"
 
 namespace edsc::live_test {
 namespace {
