@@ -84,15 +84,17 @@ std::optional<std::string> unknown_command(const CLI::App& app, int argc, const 
 
 std::optional<std::string> option_hint(const CLI::App& app, int argc, const char* const* argv) {
   const auto& cmd = command_named(app, argc, argv);
-  std::vector<std::string> longs;
+  std::vector<std::string> longs, known;
   for (const auto* opt : cmd.get_options())
-    if (!opt->get_group().empty())  // hidden spellings are not suggested
-      for (const auto& n : opt->get_lnames()) longs.push_back("--" + n);
+    for (const auto& n : opt->get_lnames()) {
+      known.push_back("--" + n);
+      if (!opt->get_group().empty()) longs.push_back("--" + n);  // hidden spellings are not suggested
+    }
   for (int i = 1; i < argc; ++i) {
     std::string_view w = argv[i];
     if (!w.starts_with("--") || w == "--") continue;
     w = w.substr(0, w.find('='));
-    if (std::find(longs.begin(), longs.end(), w) != longs.end()) continue;
+    if (std::find(known.begin(), known.end(), w) != known.end()) continue;
     if (const auto near = nearest(w, longs)) return fmt::format("unknown option '{}'; did you mean '{}'?", w, *near);
     std::string path;
     for (const auto* c = &cmd; c != nullptr; c = c->get_parent()) path = path.empty() ? c->get_name() : c->get_name() + " " + path;

@@ -105,7 +105,7 @@ TEST_F(opener_stack, a_corpus_device_of_other_sizes_builds_a_device_that_verifie
 
 TEST_F(opener_stack, an_eds_of_edsc_new_builds_and_follows_an_edited_input_size) {
   const auto eds = new_eds("new", "--vendor 4242 --product-type 43 --product-code 77 --name 'edsc new device' "
-                                  "--revision 3.2 --input 6 --output 4");
+                                  "--revision 3.2 --input-bytes 6 --output-bytes 4");
   auto out = build_run_verify("new", eds);
   if (out.empty()) return;
   EXPECT_TRUE(row_matches(out, "Connection1 ", "frames of 6 B")) << out;
@@ -123,7 +123,7 @@ TEST_F(opener_stack, an_eds_of_edsc_new_builds_and_follows_an_edited_input_size)
 TEST_F(opener_stack, a_hostile_name_is_escaped_all_the_way_to_the_identity_object) {
   // Quotes, a comment end, backslashes, a question mark pair and UTF-8.
   const auto eds = new_eds("hostile", R"(--vendor 4243 --product-type 7 --product-code 9 --name 'a"b*/c\\d??=é' )"
-                                      "--input 2 --output 2");
+                                      "--input-bytes 2 --output-bytes 2");
   // A connection name that would end a C comment, with a backslash and UTF-8.
   const auto e = run_edsc("edit " + quoted(eds) +
                           R"( --in-place --set 'Connection Manager.Connection1.name="x */ y \\ z ü"')");
