@@ -19,16 +19,8 @@ namespace edsc::io {
 namespace {
 
 std::optional<io_error> write_fd(int fd, const std::string& path, std::string_view bytes) {
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return io_error{fmt::format("{}: cannot write: {}", path, std::strerror(errno))};
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  return std::nullopt;
+  if (write_fully(fd, bytes)) return std::nullopt;
+  return io_error{fmt::format("{}: cannot write: {}", path, std::strerror(errno))};
 }
 
 // The descriptor a name of an already open stream stands for: writing there

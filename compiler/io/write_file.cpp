@@ -41,15 +41,7 @@ std::optional<io_error> write_atomically(const std::string& path, std::string_vi
     return io_error{fmt::format("{}: cannot {}: {}", path, what, std::strerror(saved))};
   };
 
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return fail("write");
-    }
-    done += static_cast<std::size_t>(n);
-  }
+  if (!write_fully(fd, bytes)) return fail("write");
   // Keep the permissions of a file being replaced; new files get the usual 0666 & ~umask.
   struct stat st {};
   if (::stat(path.c_str(), &st) == 0) {
@@ -77,6 +69,19 @@ std::optional<io_error> write_atomically(const std::string& path, std::string_vi
     ::close(dfd);
   }
   return std::nullopt;
+}
+
+bool write_fully(int fd, std::string_view bytes) {
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return false;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
 }
 
 bool same_file(const std::string& a, const std::string& b) {
