@@ -21,6 +21,7 @@
 #include "cst/cst.hpp"
 #include "diff/diff.hpp"
 #include "emit/header_view.hpp"
+#include "emit/opener_plan.hpp"
 #include "inputs.hpp"
 #include "io/read_file.hpp"
 #include "lower/lower.hpp"
@@ -105,6 +106,16 @@ const stage stages[] = {
      [](const input_set&, const files_t& files) {
        emit::header_options opt;
        for (const auto& f : files) benchmark::DoNotOptimize(emit::generate_header(f->dev, *f->src, opt));
+     }},
+    // `edsc header --stack opener` past the front end: the plan (with what
+    // OpENer cannot serve) and the project's five files.
+    {"emit_opener_stack",
+     [](const input_set&, const files_t& files) {
+       for (const auto& f : files) {
+         diagnostics diags;
+         std::vector<emit::header_issue> issues;
+         benchmark::DoNotOptimize(emit::render_opener(emit::plan_opener(f->dev, *f->src, diags, issues)));
+       }
      }},
 };
 

@@ -8,85 +8,26 @@
 #include <iostream>
 #include <memory>
 
-#include "netns/test_network.hpp"
-#include "opener_project.hpp"
+#include "device_check.hpp"
 
 namespace edsc::stack_test {
 namespace {
 
 namespace fs = std::filesystem;
 
-// tests/live and tests/sim take the /30s below 198.51.100.128; this folder
-// the ones above (tests/netns/test_network.hpp).
-const live_test::network_options stack_net{"edsc-stack-", "ek", 32, 62};
-
 const std::string sample_eds = std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds";
 // Another vendor and device type (55512, 43), built on OpENer by its vendor.
 const std::string fusion_eds = std::string(EDSC_CORPUS_DIR) + "/AGSweeney__EthernetIP-Scale__eds__ESP32P4_OPENER.eds";
 
-// An EDS of `edsc new` in the device's folder.
-std::string new_eds(const std::string& name, const std::string& args) {
-  const auto dir = fs::path(stack_root()) / name;
-  fs::create_directories(dir);
-  const auto path = (dir / "device.eds").string();
-  const auto r = run_edsc("new --network ethernetip --date 01-01-2026 " + args + " -o " + quoted(path) + " --force");
-  EXPECT_EQ(r.status, 0) << r.output;
-  // `edsc new` leaves the RPIs to the user; a scanner needs one to open the connection.
-  const auto e = run_edsc("edit " + quoted(path) + " --in-place --set 'Connection Manager.Connection1.ot_rpi=20000'"
-                          " --set 'Connection Manager.Connection1.to_rpi=20000'");
-  EXPECT_EQ(e.status, 0) << e.output;
-  return path;
-}
-
-std::string verify(const std::string& ip, const std::string& eds, int& status) {
-  const auto r = run_edsc("verify --live " + ip + " " + quoted(eds) + " --connections --color never");
-  status = r.status;
-  return r.output;
-}
-
-// Builds the device, runs it in a namespace (removed on return), verifies it
-// against `eds`. Returns the verify report ("" when a step failed).
+// Builds the device from `edsc header --stack opener`'s files, then runs and verifies it.
 std::string build_run_verify(const std::string& name, const std::string& eds) {
-  std::string why;
-  auto net = live_test::test_network::make(why, stack_net);
-  if (!net) {
-    ADD_FAILURE() << why;
-    return {};
-  }
   const auto b = build_device(name, eds);
   if (!b.ok) {
     ADD_FAILURE() << name << ": the device did not build\n" << b.log;
     return {};
   }
   std::cout << name << ": generated in " << b.generate_s << " s, built in " << b.build_s << " s\n";
-  if (!net->start_opener(b.binary, why)) {
-    ADD_FAILURE() << why;
-    return {};
-  }
-  int status = -1;
-  auto out = verify(net->device_ip, eds, status);
-  EXPECT_EQ(status, 0) << out;
-  EXPECT_NE(out.find("0 errors"), std::string::npos) << out;
-  EXPECT_EQ(out.find("mismatch"), std::string::npos) << out;
-  return out;
-}
-
-class opener_stack : public ::testing::Test {
- protected:
-  void SetUp() override {
-    std::string why;
-    // Probe once: the namespace is made again for each device.
-    if (!live_test::test_network::make(why, stack_net)) GTEST_SKIP() << why;
-    if (!fs::exists(std::string(EDSC_OPENER_SOURCE_DIR) + "/CMakeLists.txt"))
-      GTEST_SKIP() << "OpENer's sources are missing: " << EDSC_OPENER_SOURCE_DIR;
-  }
-};
-
-bool row_matches(const std::string& report, const std::string& head, const std::string& needle) {
-  const auto at = report.find("\n" + head);
-  if (at == std::string::npos) return false;
-  const auto row = report.substr(at + 1, report.find('\n', at + 1) - at - 1);
-  return row.find(needle) != std::string::npos && row.ends_with("match");
+  return run_verify(b.binary, eds);
 }
 
 TEST_F(opener_stack, its_own_sample_eds_builds_a_device_that_verifies) {
