@@ -100,6 +100,19 @@ TEST_F(Automap, FixedNodeConnectionsAlignOneAfterTheOther) {
   }
 }
 
+TEST_F(Automap, AFixedNodesEmptyConnectionTakesNoRoom) {
+  // a fixed at DWord 1: its poll has no input, so its cos (2 bytes) is its
+  // first input block, at byte 4; b (auto, 1 byte) from 0 fits before it.
+  // Output: a is not fixed there, its poll's 2 bytes auto at 0.
+  const auto nodes = one(2, "a", poll(0, 2) + ", { type = \"cos\", input = 2 }", "input_dword = 1") + one(3, "b", poll(1));
+  auto c = check(header() + nodes);
+  ASSERT_TRUE(c.result);
+  const auto l = automap(*c.result);
+  EXPECT_TRUE(l.problems.empty());
+  EXPECT_EQ(blocks(*c.result, l.input), (std::vector<std::string>{"3:0+1", "2:4+2"}));
+  EXPECT_EQ(blocks(*c.result, l.output), (std::vector<std::string>{"2:0+2"}));
+}
+
 TEST_F(Automap, EachImageHasItsOwnFixedNodesAndStart) {
   // a: input fixed at DWord 0, output auto. b: output fixed at DWord 0, input
   // auto. Input: a 0-3, b from 0 -> after a, 4. Output from DWord 1: b 0-1
@@ -202,6 +215,21 @@ TEST_F(Automap, AFixedNodeOverSeveralOthersNamesTheFirst) {
       ASSERT_EQ(d.notes.size(), 1u);
       EXPECT_EQ(d.notes[0].message, "node 'a' is placed here");
     }
+}
+
+TEST_F(Automap, APlanWithoutAScannerProfileHasNoImages) {
+  // Nothing to size the images by: empty images and no problems, even with a
+  // node that has data (a plan can be built by hand, without check()).
+  edsc::network::plan p;
+  edsc::network::planned_node n;
+  n.mac = 3;
+  n.connections.push_back({edsc::network::conn_type::poll, 4, 4});
+  p.nodes.push_back(n);
+  const auto l = automap(p);
+  EXPECT_TRUE(l.input.blocks.empty());
+  EXPECT_TRUE(l.output.blocks.empty());
+  EXPECT_EQ(l.input.capacity, 0u);
+  EXPECT_TRUE(l.problems.empty());
 }
 
 }  // namespace
