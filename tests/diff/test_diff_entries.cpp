@@ -125,4 +125,24 @@ TEST(DiffEntries, QuotedTextKeepsItsBlanksAndCase) {
   EXPECT_EQ(d.subject, "[File] DescText");
 }
 
+// A connection is named in a subject by its name cut to 40 characters: a
+// name of exactly 40 is whole, one of 41 loses its last character to "...".
+TEST(DiffEntries, ConnectionNamesAreCutAfterFortyCharacters) {
+  const std::string name39 = "Exclusive Owner of the forty-char label";
+  ASSERT_EQ(name39.size(), 39u);
+  const auto with = [&](const std::string& name) {
+    return device_eds +
+           "[Connection Manager]\n"
+           "        Connection1 = 0x04010002, 0x44640405, , 4, Assem100, , 2, Assem101, , , , ,\n"
+           "                      \"" + name + "\", \"\", \"20 04 24 01 2C 64 2C 65\";\n";
+  };
+  const auto added = [&](const std::string& name) {
+    const auto c = compare(device_eds, with(name));
+    const auto* d = c.find("connection-added");
+    return d == nullptr ? std::string("(none)") : d->subject;
+  };
+  EXPECT_EQ(added(name39 + "s"), "[Connection Manager] Connection1 \"" + name39 + "s\"");
+  EXPECT_EQ(added(name39 + "s!"), "[Connection Manager] Connection1 \"" + name39 + "s...\"");
+}
+
 }  // namespace
