@@ -145,4 +145,15 @@ TEST(DiffEntries, ConnectionNamesAreCutAfterFortyCharacters) {
   EXPECT_EQ(added(name39 + "s!"), "[Connection Manager] Connection1 \"" + name39 + "s...\"");
 }
 
+// A one-bit member is "bit N", not "bits N-N": Param3 as bit 24 of the
+// 32-bit Output assembly (16 + 8 + 1 + 7 bits of padding).
+TEST(DiffEntries, OneBitMemberIsNamedByItsBit) {
+  const auto filled = replaced(device_eds, "8, Param2, 8, ;", "8, Param2, 1, Param3, 7, ;");
+  const auto c = compare(device_eds, filled);
+  const auto* d = c.find("assembly-member-added");
+  ASSERT_NE(d, nullptr) << c.dump();
+  EXPECT_NE(d->message.find("Param3 \"Status\" added at bit 24"), std::string::npos) << d->message;
+  EXPECT_EQ(d->message.find("bits 24-24"), std::string::npos) << d->message;
+}
+
 }  // namespace
