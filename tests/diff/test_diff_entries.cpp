@@ -156,4 +156,17 @@ TEST(DiffEntries, OneBitMemberIsNamedByItsBit) {
   EXPECT_EQ(d->message.find("bits 24-24"), std::string::npos) << d->message;
 }
 
+// Each enumerated value in a message is cut after 40 characters, counting its
+// number and quotes: 3 "N...N" with 36 N is 40 and whole, with 37 N it is 41
+// and loses its closing quote to "...".
+TEST(DiffEntries, EnumeratedValuesAreCutAfterFortyCharacters) {
+  const auto added = [](std::size_t n) {
+    const auto c = compare(device_eds, replaced(device_eds, "2, \"Jog\";", "2, \"Jog\", 3, \"" + std::string(n, 'N') + "\";"));
+    const auto* d = c.find("param-enum-added");
+    return d == nullptr ? std::string("(none)") : d->message;
+  };
+  EXPECT_EQ(added(36), "enumerated values added: 3 \"" + std::string(36, 'N') + "\"");
+  EXPECT_EQ(added(37), "enumerated values added: 3 \"" + std::string(37, 'N') + "...");
+}
+
 }  // namespace
