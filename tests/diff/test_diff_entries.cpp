@@ -169,4 +169,13 @@ TEST(DiffEntries, EnumeratedValuesAreCutAfterFortyCharacters) {
   EXPECT_EQ(added(37), "enumerated values added: 3 \"" + std::string(37, 'N') + "...");
 }
 
+// A string in a message is quoted with its quotes and backslashes escaped,
+// every other character as it is.
+TEST(DiffEntries, StringsInMessagesAreQuotedAndEscaped) {
+  const auto d = only(device_eds, replaced(device_eds, "DescText = \"diff test device\";",
+                                           "DescText = \"say \\\"hi\\\" c:\\\\dir\";"));
+  EXPECT_EQ(d.subject, "[File] DescText");
+  EXPECT_EQ(d.message, "\"diff test device\" -> \"say \\\"hi\\\" c:\\\\dir\"");
+}
+
 }  // namespace
