@@ -178,4 +178,18 @@ TEST(DiffEntries, StringsInMessagesAreQuotedAndEscaped) {
   EXPECT_EQ(d.message, "\"diff test device\" -> \"say \\\"hi\\\" c:\\\\dir\"");
 }
 
+// EPATHs compare by their bytes: blanks and the case of hex digits do not
+// count, a different byte does, and messages show the hex in upper case.
+TEST(DiffEntries, PathsCompareByTheirBytes) {
+  const std::string path = "\"20 04 24 64 30 03\"";
+  const auto with = [&](const std::string& p) { return replaced(device_eds, path, p); };
+  const auto d = only(device_eds, with("\"20 04 24 66 30 03\""));
+  EXPECT_EQ(d.kind, "assembly-path");
+  EXPECT_NE(d.message.find("path \"20 04 24 64 30 03\" -> \"20 04 24 66 30 03\""), std::string::npos) << d.message;
+  EXPECT_TRUE(compare(device_eds, with("\"20  04 24 64   30 03\"")).r.differences.empty());
+  EXPECT_TRUE(compare(with("\"20 04 24 6A 30 0B\""), with("\"20 04 24 6a 30 0b\"")).r.differences.empty());
+  const auto e = only(with("\"20 04 24 6a 30 0b\""), with("\"20 04 24 6c 30 0b\""));
+  EXPECT_NE(e.message.find("path \"20 04 24 6A 30 0B\" -> \"20 04 24 6C 30 0B\""), std::string::npos) << e.message;
+}
+
 }  // namespace
