@@ -190,6 +190,18 @@ TEST(DiffEntries, PathsCompareByTheirBytes) {
   EXPECT_TRUE(compare(with("\"20 04 24 6A 30 0B\""), with("\"20 04 24 6a 30 0b\"")).r.differences.empty());
   const auto e = only(with("\"20 04 24 6a 30 0b\""), with("\"20 04 24 6c 30 0b\""));
   EXPECT_NE(e.message.find("path \"20 04 24 6A 30 0B\" -> \"20 04 24 6C 30 0B\""), std::string::npos) << e.message;
+  // The case of a byte's first digit as well as its second.
+  EXPECT_TRUE(compare(with("\"20 04 24 A4 30 03\""), with("\"20 04 24 a4 30 03\"")).r.differences.empty());
+}
+
+// An invalid field compares as written, case included: "low" and "LOW" as
+// Param1's minimum are two different texts.
+TEST(DiffEntries, InvalidFieldsCompareWithTheirCase) {
+  const auto with = [&](const char* min) {
+    return replaced(device_eds, "\"Motor speed\", 0, 3000", std::string("\"Motor speed\", ") + min + ", 3000");
+  };
+  const auto d = only(with("low"), with("LOW"));
+  EXPECT_NE(d.message.find("range low .. 3000 -> LOW .. 3000"), std::string::npos) << d.message;
 }
 
 }  // namespace
