@@ -204,4 +204,21 @@ TEST(DiffEntries, InvalidFieldsCompareWithTheirCase) {
   EXPECT_NE(d.message.find("range low .. 3000 -> LOW .. 3000"), std::string::npos) << d.message;
 }
 
+// A trigger field that is not a number says nothing about its bits: replaced
+// by 0x04010002, it is breaking (no longer comparable), but no bit of the new
+// value counts as withdrawn, bit 0 included.
+TEST(DiffEntries, UnreadableTriggerWithdrawsNoBit) {
+  const auto with = [&](const std::string& trigger) {
+    return device_eds +
+           "[Connection Manager]\n"
+           "        Connection1 = " + trigger + ", 0x44640405, , 4, Assem100, , 2, Assem101, , , , ,\n"
+           "                      \"Exclusive Owner\", \"\", \"20 04 24 01 2C 64 2C 65\";\n";
+  };
+  const auto c = compare(with("bad"), with("0x04010002"));
+  const auto* d = c.find("connection-trigger");
+  ASSERT_NE(d, nullptr) << c.dump();
+  EXPECT_EQ(d->level, impact::breaking);
+  EXPECT_NE(d->consequence.find("withdrawn (bits 0x0)"), std::string::npos) << d->consequence;
+}
+
 }  // namespace
