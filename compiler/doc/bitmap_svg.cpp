@@ -13,7 +13,7 @@ namespace edsc::doc {
 
 namespace {
 
-constexpr int row_h = 30, gutter = 78, top = 22, right_pad = 4;
+constexpr int row_h = 30, min_gutter = 78, top = 22, right_pad = 4;
 constexpr double char_w = 6.4;  // average width of an 11px sans-serif character
 constexpr const char* palette[] = {"#cfe3ff", "#ffe0b3", "#d3f0cf", "#f7d2e8", "#e2d8ff",
                                    "#fff0a6", "#c8eeee", "#ffd3cc"};
@@ -108,10 +108,23 @@ std::string svg_style(const std::string& id) {
   return css + "</style>";
 }
 
+// The left column holds each row's right-aligned "byte N" / "bytes N–M"
+// label 8 px before the grid: wide enough for the longest one, so a label of
+// three-digit bytes is not cut at the figure's edge.
+int gutter_for(const std::vector<row>& rows) {
+  std::size_t widest = 0;
+  for (const auto& r : rows) {
+    const auto digits = [](std::uint32_t v) { return fmt::formatted_size("{}", v); };
+    widest = std::max(widest, r.whole != nullptr ? 7 + digits(r.byte) + digits(r.last) : 5 + digits(r.byte));
+  }
+  return std::max(min_gutter, static_cast<int>(static_cast<double>(widest) * char_w) + 8 + 6);
+}
+
 }  // namespace
 
 std::string render_svg(const bit_map& m) {
   const auto rows = layout_rows(m);
+  const int gutter = gutter_for(rows);
   const int cell_w = cell_width(m), width = gutter + 8 * cell_w + right_pad;
   const int height = top + static_cast<int>(rows.size()) * row_h + 4;
   std::string out = fmt::format(

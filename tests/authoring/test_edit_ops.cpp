@@ -143,5 +143,35 @@ TEST(EditOps, MultiPieceHelpKeepsOnePiecePerLine) {
   EXPECT_NE(ed.text().find("\"a\\n\"\n                \"b\";"), std::string::npos) << ed.text();
 }
 
+// Removing an entry that shares its line: it goes with the blanks and tabs
+// after it, and the entry after it stays, on the same line.
+TEST(EditOps, RemovingAnEntryThatSharesItsLine) {
+  editor ed("t.eds", "[Device]\n    MajRev = 1; \t MinRev = 4;\n    ProdCode = 2;\n");
+  ed.remove_entry("Device.MajRev");
+  EXPECT_EQ(ed.text(), "[Device]\n    MinRev = 4;\n    ProdCode = 2;\n");
+  editor first("t.eds", "[Device]\nMajRev = 1;  MinRev = 4;\n");
+  first.remove_entry("Device.MinRev");
+  EXPECT_EQ(first.text(), "[Device]\nMajRev = 1;  \n");  // the blanks before it stay, the line end too
+}
+
+// Section names: letters, digits, single inner spaces and _ . / \ - only.
+TEST(EditOps, SectionNamesTheEditorAccepts) {
+  for (const char* good : {"Extra_Notes", "Vendor.Data/Block-2", "Back\\Slash", "Two Words"}) {
+    editor ed("t.eds", small);
+    EXPECT_NO_THROW(ed.add_section(good)) << good;
+    EXPECT_NE(ed.text().find(std::string("[") + good + "]"), std::string::npos) << good;
+  }
+  for (const char* bad : {"", " Lead", "Trail ", "Two  Spaces", "A]B", "Dollar$", "Tab\tName", "Semi;colon"}) {
+    editor ed("t.eds", small);
+    try {
+      ed.add_section(bad);
+      ADD_FAILURE() << "accepted [" << bad << "]";
+    } catch (const edit_error& e) {
+      EXPECT_NE(std::string(e.what()).find("is not a section name"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(ed.text(), small) << bad;
+  }
+}
+
 }  // namespace
 }  // namespace authoring

@@ -125,4 +125,100 @@ TEST(DiffEntries, QuotedTextKeepsItsBlanksAndCase) {
   EXPECT_EQ(d.subject, "[File] DescText");
 }
 
+// A connection is named in a subject by its name cut to 40 characters: a
+// name of exactly 40 is whole, one of 41 loses its last character to "...".
+TEST(DiffEntries, ConnectionNamesAreCutAfterFortyCharacters) {
+  const std::string name39 = "Exclusive Owner of the forty-char label";
+  ASSERT_EQ(name39.size(), 39u);
+  const auto with = [&](const std::string& name) {
+    return device_eds +
+           "[Connection Manager]\n"
+           "        Connection1 = 0x04010002, 0x44640405, , 4, Assem100, , 2, Assem101, , , , ,\n"
+           "                      \"" + name + "\", \"\", \"20 04 24 01 2C 64 2C 65\";\n";
+  };
+  const auto added = [&](const std::string& name) {
+    const auto c = compare(device_eds, with(name));
+    const auto* d = c.find("connection-added");
+    return d == nullptr ? std::string("(none)") : d->subject;
+  };
+  EXPECT_EQ(added(name39 + "s"), "[Connection Manager] Connection1 \"" + name39 + "s\"");
+  EXPECT_EQ(added(name39 + "s!"), "[Connection Manager] Connection1 \"" + name39 + "s...\"");
+}
+
+// A one-bit member is "bit N", not "bits N-N": Param3 as bit 24 of the
+// 32-bit Output assembly (16 + 8 + 1 + 7 bits of padding).
+TEST(DiffEntries, OneBitMemberIsNamedByItsBit) {
+  const auto filled = replaced(device_eds, "8, Param2, 8, ;", "8, Param2, 1, Param3, 7, ;");
+  const auto c = compare(device_eds, filled);
+  const auto* d = c.find("assembly-member-added");
+  ASSERT_NE(d, nullptr) << c.dump();
+  EXPECT_NE(d->message.find("Param3 \"Status\" added at bit 24"), std::string::npos) << d->message;
+  EXPECT_EQ(d->message.find("bits 24-24"), std::string::npos) << d->message;
+}
+
+// Each enumerated value in a message is cut after 40 characters, counting its
+// number and quotes: 3 "N...N" with 36 N is 40 and whole, with 37 N it is 41
+// and loses its closing quote to "...".
+TEST(DiffEntries, EnumeratedValuesAreCutAfterFortyCharacters) {
+  const auto added = [](std::size_t n) {
+    const auto c = compare(device_eds, replaced(device_eds, "2, \"Jog\";", "2, \"Jog\", 3, \"" + std::string(n, 'N') + "\";"));
+    const auto* d = c.find("param-enum-added");
+    return d == nullptr ? std::string("(none)") : d->message;
+  };
+  EXPECT_EQ(added(36), "enumerated values added: 3 \"" + std::string(36, 'N') + "\"");
+  EXPECT_EQ(added(37), "enumerated values added: 3 \"" + std::string(37, 'N') + "...");
+}
+
+// A string in a message is quoted with its quotes and backslashes escaped,
+// every other character as it is.
+TEST(DiffEntries, StringsInMessagesAreQuotedAndEscaped) {
+  const auto d = only(device_eds, replaced(device_eds, "DescText = \"diff test device\";",
+                                           "DescText = \"say \\\"hi\\\" c:\\\\dir\";"));
+  EXPECT_EQ(d.subject, "[File] DescText");
+  EXPECT_EQ(d.message, "\"diff test device\" -> \"say \\\"hi\\\" c:\\\\dir\"");
+}
+
+// EPATHs compare by their bytes: blanks and the case of hex digits do not
+// count, a different byte does, and messages show the hex in upper case.
+TEST(DiffEntries, PathsCompareByTheirBytes) {
+  const std::string path = "\"20 04 24 64 30 03\"";
+  const auto with = [&](const std::string& p) { return replaced(device_eds, path, p); };
+  const auto d = only(device_eds, with("\"20 04 24 66 30 03\""));
+  EXPECT_EQ(d.kind, "assembly-path");
+  EXPECT_NE(d.message.find("path \"20 04 24 64 30 03\" -> \"20 04 24 66 30 03\""), std::string::npos) << d.message;
+  EXPECT_TRUE(compare(device_eds, with("\"20  04 24 64   30 03\"")).r.differences.empty());
+  EXPECT_TRUE(compare(with("\"20 04 24 6A 30 0B\""), with("\"20 04 24 6a 30 0b\"")).r.differences.empty());
+  const auto e = only(with("\"20 04 24 6a 30 0b\""), with("\"20 04 24 6c 30 0b\""));
+  EXPECT_NE(e.message.find("path \"20 04 24 6A 30 0B\" -> \"20 04 24 6C 30 0B\""), std::string::npos) << e.message;
+  // The case of a byte's first digit as well as its second.
+  EXPECT_TRUE(compare(with("\"20 04 24 A4 30 03\""), with("\"20 04 24 a4 30 03\"")).r.differences.empty());
+}
+
+// An invalid field compares as written, case included: "low" and "LOW" as
+// Param1's minimum are two different texts.
+TEST(DiffEntries, InvalidFieldsCompareWithTheirCase) {
+  const auto with = [&](const char* min) {
+    return replaced(device_eds, "\"Motor speed\", 0, 3000", std::string("\"Motor speed\", ") + min + ", 3000");
+  };
+  const auto d = only(with("low"), with("LOW"));
+  EXPECT_NE(d.message.find("range low .. 3000 -> LOW .. 3000"), std::string::npos) << d.message;
+}
+
+// A trigger field that is not a number says nothing about its bits: replaced
+// by 0x04010002, it is breaking (no longer comparable), but no bit of the new
+// value counts as withdrawn, bit 0 included.
+TEST(DiffEntries, UnreadableTriggerWithdrawsNoBit) {
+  const auto with = [&](const std::string& trigger) {
+    return device_eds +
+           "[Connection Manager]\n"
+           "        Connection1 = " + trigger + ", 0x44640405, , 4, Assem100, , 2, Assem101, , , , ,\n"
+           "                      \"Exclusive Owner\", \"\", \"20 04 24 01 2C 64 2C 65\";\n";
+  };
+  const auto c = compare(with("bad"), with("0x04010002"));
+  const auto* d = c.find("connection-trigger");
+  ASSERT_NE(d, nullptr) << c.dump();
+  EXPECT_EQ(d->level, impact::breaking);
+  EXPECT_NE(d->consequence.find("withdrawn (bits 0x0)"), std::string::npos) << d->consequence;
+}
+
 }  // namespace

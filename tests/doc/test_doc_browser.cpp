@@ -58,7 +58,109 @@ bool screenshot(const std::string& browser, const fs::path& page, const std::str
             "--hide-scrollbars --user-data-dir=" + quoted(profile.path() / "p") +
             " --window-size=1200," + std::to_string(height) + " --screenshot=" + quoted(png) + " " +
             test::quoted(fs::path("file://" + fs::absolute(page).string())));
-  return fs::exists(png) && fs::file_size(png) > 10000;
+  return fs::exists(png);
+}
+
+// What a reader sees, measured in the laid-out page at the screenshot's
+// window size: a probe script (appended to a copy of the page) records the
+// headings and every SVG figure with its boxes in page pixels.
+struct layout_probe {
+  int viewport = 0, scroll_width = 0;
+  struct heading {
+    std::string tag, text;
+    int left = 0, top = 0, width = 0, height = 0;
+  };
+  std::vector<heading> headings;  // h1 and h2, in document order
+  struct figure {
+    int width = 0, height = 0;            // as laid out
+    int width_attr = 0, height_attr = 0;  // as the SVG asks
+    int texts = 0, texts_outside = 0;     // labels drawn past the figure's edges
+    std::string label;                    // aria-label
+  };
+  std::vector<figure> figures;
+};
+
+layout_probe probe_layout(const std::string& browser, const fs::path& page, int height = 2400) {
+  temp_dir profile("doc-chromium");
+  const auto copy = profile.path() / "probed.html";
+  auto html = read_text(page);
+  const auto body_end = html.rfind("</body>");
+  html.insert(body_end == std::string::npos ? html.size() : body_end,
+              "<script>window.addEventListener('load',function(){var o=[],d=document.documentElement;"
+              "function b(e){var r=e.getBoundingClientRect();return [Math.round(r.left),Math.round(r.top+scrollY),"
+              "Math.round(r.width),Math.round(r.height)].join(' ');}"
+              "o.push('V '+d.clientWidth+' '+d.scrollWidth);"
+              "document.querySelectorAll('h1,h2').forEach(function(h){o.push('H '+h.tagName+' '+b(h)+' '+"
+              "h.textContent.trim().replace(/[\\s|]+/g,'_'));});"
+              "document.querySelectorAll('svg').forEach(function(s){var r=s.getBoundingClientRect(),n=0,x=0;"
+              "s.querySelectorAll('text').forEach(function(t){n++;var q=t.getBoundingClientRect();"
+              "if(q.width<=0||q.left<r.left-0.5||q.right>r.right+0.5||q.top<r.top-0.5||q.bottom>r.bottom+0.5)x++;});"
+              "o.push('S '+Math.round(r.width)+' '+Math.round(r.height)+' '+(s.getAttribute('width')||0)+' '+"
+              "(s.getAttribute('height')||0)+' '+n+' '+x+' '+(s.getAttribute('aria-label')||'').replace(/[\\s|]+/g,'_'));});"
+              "document.body.setAttribute('data-probe',o.join('|'));});</script>");
+  test::write_text(copy, html);
+  const auto dom = profile.path() / "dom";
+  run_shell("{ timeout 120 " + test::quoted(fs::path(browser)) + " --headless --disable-gpu --no-sandbox --no-first-run " +
+            "--hide-scrollbars --user-data-dir=" + quoted(profile.path() / "p") + " --window-size=1200," +
+            std::to_string(height) + " --dump-dom " + test::quoted(fs::path("file://" + copy.string())) + " >" +
+            quoted(dom) + " 2>/dev/null; }");
+  const auto text = read_text(dom);
+  layout_probe p;
+  const auto at = text.find("data-probe=\"");
+  if (at == std::string::npos) return p;
+  std::istringstream records(text.substr(at + 12, text.find('"', at + 12) - at - 12));
+  for (std::string rec; std::getline(records, rec, '|');) {
+    std::istringstream f(rec);
+    std::string kind;
+    f >> kind;
+    if (kind == "V") {
+      f >> p.viewport >> p.scroll_width;
+    } else if (kind == "H") {
+      layout_probe::heading h;
+      f >> h.tag >> h.left >> h.top >> h.width >> h.height >> h.text;
+      p.headings.push_back(h);
+    } else if (kind == "S") {
+      layout_probe::figure g;
+      f >> g.width >> g.height >> g.width_attr >> g.height_attr >> g.texts >> g.texts_outside >> g.label;
+      p.figures.push_back(g);
+    }
+  }
+  return p;
+}
+
+// The page fits the window's width, its headings show in document order one
+// below the other, and each figure is drawn at the size it asks for with
+// every label inside it.
+void expect_laid_out(const layout_probe& p) {
+  ASSERT_GT(p.viewport, 0) << "the probe did not run";
+  EXPECT_LE(p.scroll_width, p.viewport) << "the page is wider than the window";
+  ASSERT_FALSE(p.headings.empty());
+  EXPECT_EQ(p.headings.front().tag, "H1");
+  for (std::size_t i = 0; i < p.headings.size(); ++i) {
+    const auto& h = p.headings[i];
+    SCOPED_TRACE(h.text);
+    EXPECT_GT(h.width, 0);
+    EXPECT_GT(h.height, 0);
+    EXPECT_GE(h.left, 0);
+    EXPECT_LE(h.left + h.width, p.viewport);
+    if (i > 0) {
+      EXPECT_GE(h.top, p.headings[i - 1].top + p.headings[i - 1].height);
+    }
+  }
+  for (const auto& g : p.figures) {
+    SCOPED_TRACE(g.label);
+    if (g.width_attr > 0) {
+      EXPECT_EQ(g.width, g.width_attr);
+      EXPECT_EQ(g.height, g.height_attr);
+    }
+    EXPECT_EQ(g.texts_outside, 0) << "of " << g.texts << " labels";
+  }
+}
+
+std::vector<std::string> headings_of(const layout_probe& p) {
+  std::vector<std::string> out;
+  for (const auto& h : p.headings) out.push_back(h.text);
+  return out;
 }
 
 class DocBrowser : public ::testing::Test {
@@ -77,8 +179,12 @@ class DocBrowser : public ::testing::Test {
     EXPECT_TRUE(v.ran);
     EXPECT_TRUE(v.console.empty()) << v.console.front();
     EXPECT_TRUE(screenshot(browser_, page, name)) << name;
+    shown_ = probe_layout(browser_, page);
+    expect_laid_out(shown_);
     return v;
   }
+
+  layout_probe shown_;
 
   std::string browser_;
   temp_dir dir_{"doc-browser"};
@@ -100,12 +206,21 @@ TEST_F(DocBrowser, RightSightDiffuse) {
   EXPECT_NE(v.dom.find("42EF-D1LDAK-F5"), std::string::npos);
   EXPECT_NE(v.dom.find(">margin diagnostics</text>"), std::string::npos);  // inside the SVG
   EXPECT_NE(v.dom.find("<svg"), std::string::npos);
+  // The file has [File], [Device] and [IO_Info] with one Input1 entry: the
+  // fixed sections, Connections for the IO_Info, one bit map, no parameters.
+  EXPECT_EQ(headings_of(shown_), (std::vector<std::string>{"RightSight_Standard_Diffuse", "Identity", "Connections",
+                                                           "I/O_bit_maps", "Diagnostics", "Source"}));
+  ASSERT_EQ(shown_.figures.size(), 1u);
+  EXPECT_EQ(shown_.figures[0].label, "bit_map_of_Input1:_Sensor");
 }
 
 TEST_F(DocBrowser, RightSightThreeByte) {
   const auto v = render(project / "eds/rightsight-42ef-3byte.eds", "rightsight-3byte");
   EXPECT_NE(v.dom.find("Variant Input1: Sensor"), std::string::npos);
   EXPECT_NE(v.dom.find(">smoke sensor (0 clear, 1 smoke)</text>"), std::string::npos);
+  // [IO_Info] and [Variant_IO_Info]: still no parameters, one section each.
+  EXPECT_EQ(headings_of(shown_), (std::vector<std::string>{"RightSight_Standard_Diffuse", "Identity", "Connections",
+                                                           "I/O_bit_maps", "Diagnostics", "Source"}));
 }
 
 TEST_F(DocBrowser, ModularRockwellFile) {

@@ -32,6 +32,14 @@ inline std::string at(const source_file& src, const diagnostic& d) {
   return std::to_string(p.line) + ":" + std::to_string(p.column);
 }
 
+// "mac:offset+size" per block of an Automap image, in image order.
+inline std::vector<std::string> blocks(const network::plan& p, const network::image_layout& im) {
+  std::vector<std::string> out;
+  for (const auto& b : im.blocks)
+    out.push_back(std::to_string(p.nodes[b.node].mac) + ":" + std::to_string(b.offset) + "+" + std::to_string(b.size));
+  return out;
+}
+
 // A network file header with the project's scanner; nodes are appended.
 inline std::string header(const std::string& extra_scanner = "") {
   return "[network]\nkind = \"devicenet\"\nname = \"t\"\nbaud = 125\n\n[scanner]\nprofile = \"1769-SDN\"\nmac = 0\n"

@@ -144,6 +144,38 @@ TEST_F(Net, SvgPlacesEachNodeWhereItsBytesAre) {
   EXPECT_LT(*rows["I"].begin(), *rows["O"].begin());
 }
 
+// Active-device entry k is bytes 4k..4k+3 of the table at register 0x04FD,
+// two bytes a register, high byte first: entry 1 (temperature) is bytes 4-7,
+// registers 0x04FF high to 0x0500 low; entry 4 (PanelView) bytes 16-19,
+// 0x0505 high to 0x0506 low.
+TEST_F(Net, ModbusActiveDeviceEntriesAreFourBytes) {
+  const auto m = run_edsc({"net", "map", thesis.string(), "--format=modbus"});
+  ASSERT_EQ(m.status, 0);
+  EXPECT_NE(m.output.find("      1    8  temperature           COS     0xB7      1       0  0x04FFH-0x0500L\n"),
+            std::string::npos)
+      << m.output;
+  EXPECT_NE(m.output.find("      4   12  panelview             Poll    0x3C     12       8  0x0505H-0x0506L\n"),
+            std::string::npos);
+}
+
+// Only identity attributes 1-4 count as the identity read: the scanner
+// reading MAC 9's product name (attribute 7) leaves it "identity not read";
+// reading its product code (3, value 2 as discrete.eds says) is a match.
+TEST_F(Net, VerifyJudgesOnlyIdentityAttributesOneToFour) {
+  const auto run = [&](const char* request, const char* answer) {
+    const auto log = file("id.tsv", std::string("step\tdir\tcan_id\tdata\n1\tM\t0x44C\t") + request + "\n2\tS\t0x44B\t" +
+                                        answer + "\n3\tS\t0x349\t00 00 01\n");
+    return run_edsc({"verify", "--network", thesis.string(), "--capture", log.string(), "--color", "never"}).output;
+  };
+  const auto name = run("00 0E 01 01 07", "00 8E 04 4C 65 76");
+  EXPECT_NE(name.find("    9  discrete     seen       1, lengths agree        identity not read\n"), std::string::npos)
+      << name;
+  const auto code = run("00 0E 01 01 03", "00 8E 02 00");
+  EXPECT_NE(code.find("    9  discrete     Match      1, lengths agree        identity matches (exact keying)\n"),
+            std::string::npos)
+      << code;
+}
+
 TEST_F(Net, NamesAreEscapedInEveryFormat) {
   const auto net = file("e.toml", header() + node(3, "a<b>&\\\"c*/d", "connections = [{ type = \"poll\", input = 2, output = 1 }]"));
   const auto svg = run_edsc({"net", "map", net.string(), "--format=svg"});

@@ -10,14 +10,6 @@ using edsc::network::image_layout;
 
 namespace {
 
-// "mac:offset+size" per block, in image order.
-std::vector<std::string> blocks(const edsc::network::plan& p, const image_layout& im) {
-  std::vector<std::string> out;
-  for (const auto& b : im.blocks)
-    out.push_back(std::to_string(p.nodes[b.node].mac) + ":" + std::to_string(b.offset) + "+" + std::to_string(b.size));
-  return out;
-}
-
 // No two blocks overlap and every byte is inside the slave area.
 void expect_sound(const image_layout& im) {
   for (std::size_t i = 0; i < im.blocks.size(); ++i) {

@@ -226,4 +226,75 @@ TEST(Verify, DecodePrintsTheConversation) {
   EXPECT_NE(run.output.find("error: object does not exist (0x16)"), std::string::npos) << run.output;
 }
 
+// candump writes 29-bit identifiers with 8 hex digits, whatever their value:
+// 00000349 is extended though it would fit 11 bits; 349 is not; 800 cannot be
+// 11-bit; 1FFFFFFF is the largest 29-bit one and 20000000 is past it.
+TEST(Verify, EightDigitIdentifiersAreExtended) {
+  const auto log = edsc::verify::read_can_log(
+      "(0.1) can0 00000349#01\n(0.2) can0 349#01\n(0.3) can0 800#01\n(0.4) can0 1FFFFFFF#01\n(0.5) can0 20000000#01\n");
+  ASSERT_EQ(log.frames.size(), 4u);
+  EXPECT_TRUE(log.frames[0].extended);
+  EXPECT_EQ(log.frames[0].id, 0x349u);
+  EXPECT_FALSE(log.frames[1].extended);
+  EXPECT_TRUE(log.frames[2].extended);
+  EXPECT_TRUE(log.frames[3].extended);
+  EXPECT_EQ(log.frames[3].id, 0x1FFFFFFFu);
+  ASSERT_EQ(log.problems.size(), 1u);
+  EXPECT_EQ(log.problems[0].line, 5u);
+}
+
+// Identity codes are 16-bit little-endian: "01 01" is 257. The start-up
+// with the vendor answer changed to 01 01 agrees with an EDS saying 257 (the
+// minor revision note stays) and disagrees with one saying 1.
+TEST(Verify, IdentityCodesAreLittleEndianWords) {
+  temp_dir dir("verify-endian");
+  const auto capture = altered(read_text(startup), "4\tS\t0x44B\t00 8E 01 00", "4\tS\t0x44B\t00 8E 01 01");
+  const auto eds = [&](const char* vendor) {
+    const auto path = dir.path() / (std::string("v") + vendor + ".eds");
+    write_text(path, altered(read_text(diffuse), "VendCode = 0001;", std::string("VendCode = ") + vendor + ";"));
+    return path;
+  };
+  EXPECT_EQ(ids(verify_text(eds("257"), capture)), std::vector<std::string>{"verify-minor-revision"});
+  const auto ds = verify_text(eds("1"), capture);
+  ASSERT_EQ(ids(ds), (std::vector<std::string>{"verify-identity-mismatch", "verify-minor-revision"}));
+  EXPECT_NE(ds[0].message.find("vendor ID 257 where the EDS says 1"), std::string::npos) << ds[0].message;
+}
+
+// Instance 4 serves COS or cyclic. With no allocation in the capture, it is
+// the type the EDS offers: COS when it offers both, cyclic when only cyclic.
+TEST(Verify, UnallocatedInstanceFourIsTheTypeTheEdsOffers) {
+  temp_dir dir("verify-inst4");
+  const std::string capture = "step\tdir\tcan_id\tdata\n1\tM\t0x44C\t00 0E 05 04 07\n1\tS\t0x44B\t00 8E 02 00\n";
+  const auto input1_mask = "                0x0006,                         $ strobe and change of state";
+  auto both = altered(read_text(diffuse), "        COSInfo = 0x0004, 1, 0;",
+                      "        COSInfo = 0x0004, 1, 0;\n        CyclicInfo = 0x0008, 1, 0;");
+  both = altered(both, input1_mask, "                0x000E,");
+  auto cyclic = altered(read_text(diffuse), "        COSInfo = 0x0004, 1, 0;", "        CyclicInfo = 0x0008, 1, 0;");
+  cyclic = altered(altered(cyclic, "Default = 0x0004;", "Default = 0x0008;"), input1_mask, "                0x000A,");
+  for (const auto& [text, type] : {std::pair{both, "COS"}, std::pair{cyclic, "cyclic"}}) {
+    const auto path = dir.path() / (std::string(type) + ".eds");
+    write_text(path, text);
+    const auto ds = verify_text(path, capture);
+    ASSERT_EQ(ids(ds), std::vector<std::string>{"verify-connection-size"}) << type;
+    EXPECT_NE(ds[0].message.find(std::string("produces 2 bytes on its ") + type + " connection where the EDS says 1"),
+              std::string::npos)
+        << ds[0].message;
+  }
+}
+
+// The decoded conversation names each allocation choice (0x01 explicit, 0x10
+// COS), and a request other than Get/Set needs no attribute.
+TEST(Verify, DecodeNamesChoicesAndServicesWithoutAttribute) {
+  const auto run = run_shell(edsc_command() + " verify --decode " + quoted(startup));
+  EXPECT_NE(run.output.find("Allocate_Master/Slave_Connection_Set 3/1: explicit\n"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("Allocate_Master/Slave_Connection_Set 3/1: COS\n"), std::string::npos);
+  temp_dir dir("verify-reset");
+  const auto reset = dir.path() / "reset.tsv";
+  write_text(reset, "step\tdir\tcan_id\tdata\n1\tM\t0x44C\t00 05 01 01\n1\tS\t0x44B\t00 85\n");
+  const auto r = run_shell(edsc_command() + " verify --decode " + quoted(reset));
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("explicit request          Reset 1/1\n"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("explicit response         Reset ok\n"), std::string::npos) << r.output;
+}
+
 }  // namespace

@@ -1,0 +1,59 @@
+// Details of fmt, resize and the model fingerprint that the other authoring
+// tests leave open: where a multi-line entry's last comment goes, the wording
+// when significant bits still end in the last byte, and section order.
+#include "authoring_support.hpp"
+#include "edit/editor.hpp"
+#include "edit/fingerprint.hpp"
+
+namespace authoring {
+namespace {
+
+class EditDetails : public scratch_test {};
+
+TEST_F(EditDetails, FmtKeepsTheLastCommentOnTheLastField) {
+  // Input2 is split over lines (a comment after its size), so fmt writes one
+  // field a line at column 16, comments at column 48; "$ after all" followed
+  // the `;` and stays on the last field's line, the line of 8 has none.
+  const auto in = file("c.eds",
+                       "[File]\n    DescText = \"x\";\n[Device]\n    MajRev = 1;\n    MinRev = 4;\n[IO_Info]\n"
+                       "    Input2 =\n        1,   $ size\n        8,\n"
+                       "        0x0001, \"In2\", 6, \"20 04 24 01 30 03\";  $ after all\n");
+  const auto r = run_edsc({"fmt", in.string()}, dir_);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto at48 = [&](const std::string& text, const std::string& comment) {
+    return text + std::string(48 - text.size(), ' ') + comment + "\n";
+  };
+  EXPECT_NE(r.output.find("        Input2 =\n" + at48("                1,", "$ size") + "                8,\n" +
+                          "                0x0001,\n                \"In2\",\n                6,\n" +
+                          at48("                \"20 04 24 01 30 03\";", "$ after all")),
+            std::string::npos)
+      << r.output;
+}
+
+TEST_F(EditDetails, ResizeSaysWhenBitsStillEndInTheLastByte) {
+  // 3 bytes with 16 significant bits, resized to 2: the 16 bits end in byte
+  // 1, the new last byte, so they stay 16 (not "16 -> 16").
+  edsc::edit::editor ed("t.eds",
+                        "[IO_Info]\n    Input1 = 3, 16, 0x0001, \"In\", 6, \"20 04 24 01 30 03\";\n");
+  ed.resize("Input1=2");
+  EXPECT_NE(ed.text().find("Input1 = 2, 16,"), std::string::npos) << ed.text();
+  ASSERT_GE(ed.log().size(), 2u);
+  EXPECT_NE(ed.log()[1].find("significant bits stay 16: they still end in the last byte"), std::string::npos)
+      << ed.log()[1];
+}
+
+TEST_F(EditDetails, FingerprintIgnoresWhereFileAndDeviceAre) {
+  // fmt moves [File], [Device], [Device Classification] to the top in that
+  // order: a file written the other way round means the same.
+  const std::string file_s = "[File]\n    DescText = \"x\";\n";
+  const std::string device_s = "[Device]\n    MajRev = 1;\n    MinRev = 4;\n";
+  const std::string class_s = "[Device Classification]\n    Class1 = DeviceNet;\n";
+  const auto fp = [](const std::string& text) { return edsc::edit::model_fingerprint("t.eds", text); };
+  const auto tidy = fp(file_s + device_s + class_s);
+  EXPECT_EQ(fp(device_s + file_s + class_s), tidy);
+  EXPECT_EQ(fp(class_s + device_s + file_s), tidy);
+  EXPECT_NE(fp(file_s + "[Device]\n    MajRev = 2;\n    MinRev = 4;\n" + class_s), tidy);
+}
+
+}  // namespace
+}  // namespace authoring
