@@ -1,20 +1,19 @@
 // `edsc sim FILE.eds`: the EDS answers on the network as an EtherNet/IP
 // adapter (docs/sim.md). Requests are handled by the pure functions of
 // compiler/sim; this file reads the file, the options and the signals.
-#include <cctype>
-#include <charconv>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <memory>
-#include <sstream>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include "check/check_file.hpp"
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
+#include "sim/inputs.hpp"
 #include "sim/server.hpp"
 
 namespace edsc::driver {
@@ -23,6 +22,7 @@ namespace {
 
 struct sim_cli {
   std::string eds, address = "0.0.0.0", inputs;
+  bool control = false;
   std::uint16_t port = 44818;
   std::uint32_t serial = 1;
 };
@@ -30,45 +30,19 @@ struct sim_cli {
 std::atomic<bool> stop_requested{false};
 extern "C" void on_stop_signal(int) { stop_requested.store(true); }
 
-// --inputs FILE: {"100": "00 01 02 ..."}: fixed bytes of input assemblies
-// (hex, spaces allowed) instead of the counter pattern.
+// --inputs FILE (JSON or TOML, sim/inputs.hpp); a located message when it does not fit the EDS.
 bool load_inputs(const std::string& path, sim::state& s) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  const auto j = nlohmann::json::parse(text.str(), nullptr, false);
-  if (!in || j.is_discarded() || !j.is_object()) {
-    print_error(fmt::format("--inputs {}: not a JSON object of instance: \"hex bytes\"", path));
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    print_error(fmt::format("--inputs {}: cannot read the file", path));
     return false;
   }
-  for (const auto& [key, value] : j.items()) {
-    std::uint32_t instance = 0;
-    const auto [p, ec] = std::from_chars(key.data(), key.data() + key.size(), instance);
-    auto* a = ec == std::errc() && p == key.data() + key.size() ? s.dev.assembly(instance) : nullptr;
-    if (a == nullptr || !value.is_string()) {
-      print_error(fmt::format("--inputs {}: \"{}\" is not an assembly instance of the EDS with a hex string", path, key));
-      return false;
-    }
-    cip::bytes b;
-    int nibble = -1;
-    for (const char c : value.get<std::string>()) {
-      const int v = std::isxdigit(static_cast<unsigned char>(c)) ? (std::isdigit(static_cast<unsigned char>(c)) ? c - '0' : (std::tolower(c) - 'a' + 10)) : -1;
-      if (v < 0) continue;
-      if (nibble < 0) nibble = v;
-      else {
-        b.push_back(static_cast<std::uint8_t>(nibble << 4 | v));
-        nibble = -1;
-      }
-    }
-    if (b.size() != a->data.size()) {
-      print_error(fmt::format("--inputs {}: instance {} holds {} bytes, the file gives {}", path, instance,
-                              a->data.size(), b.size()));
-      return false;
-    }
-    a->data = b;
-    a->fixed = true;
-  }
-  return true;
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const auto e = sim::load_inputs(s.dev, path, text);
+  if (!e) return true;
+  if (e->line > 0) print_error(fmt::format("{}:{}:{}: {}", path, e->line, e->column, e->message));
+  else print_error(fmt::format("{}: {}", path, e->message));
+  return false;
 }
 
 int run_sim(const sim_cli& cli) {
@@ -81,6 +55,10 @@ int run_sim(const sim_cli& cli) {
   }
   sim::state s;
   s.dev = sim::build_device(checked->dev, cli.serial);
+  // The File object serves the file as it is on disk, not as it was decoded.
+  std::ifstream raw(cli.eds, std::ios::binary);
+  s.dev.file.content.assign(std::istreambuf_iterator<char>(raw), std::istreambuf_iterator<char>());
+  s.dev.file.name = std::filesystem::path(cli.eds).filename().string();
   if (!cli.inputs.empty() && !load_inputs(cli.inputs, s)) return exit_failure;
   for (const auto& u : s.dev.skipped)
     std::fprintf(stderr, "edsc: note: Connection%u not served: %s\n", u.number, u.why.c_str());
@@ -91,6 +69,7 @@ int run_sim(const sim_cli& cli) {
   sim::server_options opt;
   opt.address = cli.address;
   opt.port = cli.port;
+  if (cli.control) opt.control_fd = 0;
   const auto problem = sim::serve(s, opt, stop_requested, [](const std::string& line) {
     std::fputs(line.c_str(), stdout);
     std::fputc('\n', stdout);
@@ -116,8 +95,12 @@ void register_sim(CLI::App& app, command_action& run) {
       ->type_name("PORT");
   cmd->add_option("--serial", cli->serial, "Serial number the Identity object reports (default 1)")->type_name("N");
   cmd->add_option("--inputs", cli->inputs,
-                  "JSON file of fixed input data, {\"INSTANCE\": \"hex bytes\"}, instead of the counter pattern")
+                  "JSON or TOML (*.toml) file of fixed input data per assembly (100 or AssemN): hex bytes, or "
+                  "named fields of its members, instead of the counter pattern")
       ->type_name("FILE");
+  cmd->add_flag("--stdin", cli->control,
+                "Read control lines from standard input (set ASSEMBLY HEX... | set ASSEMBLY FIELD=NUMBER... | "
+                "get ASSEMBLY), each answered by a JSON line");
   cmd->callback([&run, cli] { run = [cli] { return run_sim(*cli); }; });
 }
 
