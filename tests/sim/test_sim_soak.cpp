@@ -187,17 +187,18 @@ TEST(sim_measure, hundred_connections_at_10_ms_for_30_s) {
   EXPECT_EQ(r.lost, 0u);
 }
 
-// The most connections held (all open and heard from, no sequence gap, 90 %
-// of the nominal frames) at 10 ms and 1 ms, in steps; 5 s each.
+// The most connections held (all open and heard from, no sequence gap, 80 %
+// of the nominal frames: the suite's floor for a shared machine) at 10 ms
+// and 1 ms, in steps; 5 s each.
 TEST(sim_measure, most_connections_held_at_1_and_10_ms) {
   if (!measuring()) GTEST_SKIP() << "a measurement: EDSC_SIM_MEASURE=1, as root";
   for (const std::uint32_t rpi : {10'000u, 1'000u}) {
     unsigned best = 0;
-    for (const unsigned n : {25u, 50u, 100u, 150u, 200u, 250u}) {
-      if (!soak(n, rpi, 5).held(0.9)) break;
+    for (const unsigned n : {5u, 10u, 15u, 20u, 25u, 50u, 100u, 150u, 200u, 250u}) {
+      if (!soak(n, rpi, 5).held(0.8)) break;
       best = n;
     }
-    std::printf("most connections held at %u us: %u (steps of 25-50, at most 250)\n", rpi, best);
+    std::printf("most connections held at %u us: %u (steps of 5 to 50, at most 250)\n", rpi, best);
   }
 }
 
