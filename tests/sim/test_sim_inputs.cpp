@@ -3,8 +3,14 @@
 // fit. Expected bytes are worked out by hand from the layout below.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
 #include "edit/analyze.hpp"
 #include "netns/live_support.hpp"
+#include "netns/run_edsc.hpp"
 #include "sim_eds.hpp"
 #include "sim/inputs.hpp"
 
@@ -126,6 +132,29 @@ TEST_F(sim_inputs, control_lines_are_answered_by_a_json_line_all_or_nothing) {
   EXPECT_NE(control(s_, "frob 100").find("unknown command \\\"frob\\\""), std::string::npos);
   EXPECT_NE(control(s_, "set 100 Speed=x").find("\\\"x\\\" is not a number"), std::string::npos);
   EXPECT_NE(control(s_, "set 100 00 Speed=1").find("not both"), std::string::npos);
+}
+
+// The command refuses a file that does not fit before it opens a socket:
+// exit status 2 and the place of the mistake.
+TEST(sim_inputs_cli, a_bad_inputs_file_stops_edsc_sim_with_its_place) {
+  const auto dir = std::filesystem::temp_directory_path() / ("edsc-sim-inputs-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto eds = (dir / "inputs.eds").string(), toml = (dir / "bad.toml").string();
+  std::ofstream(eds) << inputs_eds;
+  std::ofstream(toml) << "[Assem5]\nrun = 2\n";
+  const auto r = live_test::run_edsc("sim " + live_test::quoted(eds) + " --address 127.0.0.1 --port 1 --inputs " +
+                                     live_test::quoted(toml), 30);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find(toml + ":2:7: \"Run\" (Param2) is a 1-bit unsigned field: 2 does not fit (0..1)"),
+            std::string::npos)
+      << r.output;
+  const auto json = (dir / "bad.json").string();
+  std::ofstream(json) << "{\"100\": \"01\"}";
+  const auto j = live_test::run_edsc("sim " + live_test::quoted(eds) + " --address 127.0.0.1 --port 1 --inputs " +
+                                     live_test::quoted(json) + " --stdin", 30);
+  EXPECT_EQ(j.status, 2) << j.output;
+  EXPECT_NE(j.output.find(json + ":1:2: instance 100 holds 8 bytes, 1 given"), std::string::npos) << j.output;
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
