@@ -1,5 +1,6 @@
 // `edsc sim` on a test network, reached as a configuration tool reaches a
-// device: the EDS uploaded from the File object byte for byte, a parameter
+// device: the EDS uploaded from the File object byte for byte (by the
+// requests themselves and by `edsc probe --upload-eds`), a parameter
 // read and written, inputs fixed by a TOML file and changed by control lines
 // on standard input.
 #include <gtest/gtest.h>
@@ -96,6 +97,14 @@ TEST_F(sim_tool, the_eds_uploaded_from_the_file_object_is_the_file) {
   EXPECT_EQ(packets, 75);  // 17796 / 240 = 74 whole packets and one of 36
   EXPECT_EQ(got, file);
   EXPECT_NE(log().find("{\"event\":\"uploaded\",\"instance\":200,\"size\":17796}"), std::string::npos) << log();
+  // The same through the command a user runs.
+  const auto out = net_->dir + "/uploaded.eds";
+  const auto r = run_edsc("probe " + net_->device_ip + " --upload-eds " + live_test::quoted(out), 60);
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("eds upload      17796 bytes from File object instance 0xC8 to " + out), std::string::npos)
+      << r.output;
+  std::ifstream again(out, std::ios::binary);
+  EXPECT_EQ(cip::bytes(std::istreambuf_iterator<char>(again), std::istreambuf_iterator<char>()), file);
 }
 
 TEST_F(sim_tool, parameters_inputs_and_control_lines_reach_the_device) {
