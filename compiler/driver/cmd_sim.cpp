@@ -87,7 +87,8 @@ int run_sim(const sim_cli& cli) {
 void register_sim(CLI::App& app, command_action& run) {
   auto cli = std::make_shared<sim_cli>();
   auto* cmd = app.add_subcommand("sim", "Serve the EDS as a virtual EtherNet/IP device: identity, assemblies, "
-                                        "Forward_Open of every ConnectionN, class 1 I/O (docs/sim.md)");
+                                        "parameters, the EDS for upload, Forward_Open of every ConnectionN, "
+                                        "class 1 I/O (docs/sim.md)");
   cmd->add_option("file", cli->eds, "The EDS file the device is built from")->required();
   cmd->add_option("--address", cli->address, "IPv4 address to listen on (default 0.0.0.0: every interface)")
       ->type_name("ADDR");
