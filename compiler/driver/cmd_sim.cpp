@@ -1,6 +1,7 @@
 // `edsc sim FILE.eds`: the EDS answers on the network as an EtherNet/IP
 // adapter (docs/sim.md). Requests are handled by the pure functions of
 // compiler/sim; this file reads the file, the options and the signals.
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -11,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "check/check_file.hpp"
+#include "diag/render_text.hpp"
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
 #include "sim/inputs.hpp"
@@ -30,18 +32,33 @@ struct sim_cli {
 std::atomic<bool> stop_requested{false};
 extern "C" void on_stop_signal(int) { stop_requested.store(true); }
 
-// --inputs FILE (JSON or TOML, sim/inputs.hpp); a located message when it does not fit the EDS.
+// The byte offset of a 1-based line and column of `text` (clamped to its end).
+std::uint32_t offset_of(std::string_view text, std::uint32_t line, std::uint32_t column) {
+  std::size_t at = 0;
+  for (std::uint32_t l = 1; l < line && at < text.size(); ++l) {
+    const auto nl = text.find('\n', at);
+    at = nl == std::string_view::npos ? text.size() : nl + 1;
+  }
+  return static_cast<std::uint32_t>(std::min(text.size(), at + (column > 0 ? column - 1 : 0)));
+}
+
+// --inputs FILE (JSON or TOML, sim/inputs.hpp); a diagnostic with its rule
+// (sim-inputs-*) at the mistake when it does not fit the EDS.
 bool load_inputs(const std::string& path, sim::state& s) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     print_error(fmt::format("--inputs {}: cannot read the file", path));
     return false;
   }
-  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  const auto e = sim::load_inputs(s.dev, path, text);
+  const source_file src(path, std::string{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()});
+  const auto e = sim::load_inputs(s.dev, path, src.text());
   if (!e) return true;
-  if (e->line > 0) print_error(fmt::format("{}:{}:{}: {}", path, e->line, e->column, e->message));
-  else print_error(fmt::format("{}: {}", path, e->message));
+  const auto at = e->line > 0 ? offset_of(src.text(), e->line, e->column) : 0;
+  const span where{at, at < src.size() ? at + 1 : at};
+  std::string report;
+  render_text(src, make_diagnostic(e->id, where, e->message), text_style{use_color(color_mode::auto_detect, stderr)},
+              report);
+  write_all(stderr, report);
   return false;
 }
 

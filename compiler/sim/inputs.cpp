@@ -97,13 +97,15 @@ std::optional<field_number> parse_number(std::string_view t) {
   return v;
 }
 
-std::optional<std::string> set_bytes(assembly_instance& a, std::string_view hex) {
+std::optional<input_refusal> set_bytes(assembly_instance& a, std::string_view hex) {
   cip::bytes b;
   int nibble = -1;
   for (const char c : hex) {
     const auto u = static_cast<unsigned char>(c);
     if (std::isspace(u)) continue;
-    if (!std::isxdigit(u)) return fmt::format("'{}' is not a hex digit (bytes are written as \"01 02 0A\")", c);
+    if (!std::isxdigit(u))
+      return input_refusal{diag_id::sim_inputs_hex,
+                           fmt::format("'{}' is not a hex digit (bytes are written as \"01 02 0A\")", c)};
     const int v = std::isdigit(u) ? c - '0' : std::tolower(u) - 'a' + 10;
     if (nibble < 0) nibble = v;
     else {
@@ -111,15 +113,16 @@ std::optional<std::string> set_bytes(assembly_instance& a, std::string_view hex)
       nibble = -1;
     }
   }
-  if (nibble >= 0) return std::string("an odd number of hex digits");
+  if (nibble >= 0) return input_refusal{diag_id::sim_inputs_hex, "an odd number of hex digits"};
   if (b.size() != a.data.size())
-    return fmt::format("instance {} holds {} bytes, {} given", a.instance, a.data.size(), b.size());
+    return input_refusal{diag_id::sim_inputs_hex,
+                         fmt::format("instance {} holds {} bytes, {} given", a.instance, a.data.size(), b.size())};
   a.data = std::move(b);
   a.fixed = true;
   return std::nullopt;
 }
 
-std::optional<std::string> set_field(assembly_instance& a, std::string_view name, field_number v) {
+std::optional<input_refusal> set_field(assembly_instance& a, std::string_view name, field_number v) {
   const input_field* f = nullptr;
   for (const auto& x : a.fields)
     if (same_name(name, x.name) || same_name(name, fmt::format("Param{}", x.param))) {
@@ -129,8 +132,9 @@ std::optional<std::string> set_field(assembly_instance& a, std::string_view name
   if (f == nullptr) {
     std::string known;
     for (const auto& x : a.fields) known += (known.empty() ? "" : ", ") + describe(x);
-    return fmt::format("instance {} has no field \"{}\"{}{}", a.instance, name,
-                       known.empty() ? " (its AssemN names no parameters)" : "; its fields: ", known);
+    return input_refusal{diag_id::sim_inputs_unknown_field,
+                         fmt::format("instance {} has no field \"{}\"{}{}", a.instance, name,
+                                     known.empty() ? " (its AssemN names no parameters)" : "; its fields: ", known)};
   }
   std::uint64_t raw = 0;
   if (f->is_real) {
@@ -143,15 +147,17 @@ std::optional<std::string> set_field(assembly_instance& a, std::string_view name
     } else std::memcpy(&raw, &d, 8);
   } else {
     if (v.is_real)
-      return fmt::format("{} is a {}-bit integer field: {} is not an integer", describe(*f), f->bits, v.real);
+      return input_refusal{diag_id::sim_inputs_value_range, fmt::format("{} is a {}-bit integer field: {} is not an integer",
+                                                                        describe(*f), f->bits, v.real)};
     const auto bits = f->bits;
     const std::int64_t lo = f->is_signed ? (bits >= 64 ? INT64_MIN : -(std::int64_t{1} << (bits - 1))) : 0;
     const std::int64_t hi = bits >= 64 ? INT64_MAX
                             : f->is_signed ? (std::int64_t{1} << (bits - 1)) - 1
                                            : static_cast<std::int64_t>((std::uint64_t{1} << bits) - 1);
     if (v.integer < lo || v.integer > hi)
-      return fmt::format("{} is a {}-bit {} field: {} does not fit ({}..{})", describe(*f), bits,
-                         f->is_signed ? "signed" : "unsigned", v.integer, lo, hi);
+      return input_refusal{diag_id::sim_inputs_value_range,
+                           fmt::format("{} is a {}-bit {} field: {} does not fit ({}..{})", describe(*f), bits,
+                                       f->is_signed ? "signed" : "unsigned", v.integer, lo, hi)};
     raw = static_cast<std::uint64_t>(v.integer);
   }
   put_bits(a.data, f->bit, f->bits, raw);

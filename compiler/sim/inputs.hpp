@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "diag/catalogue.hpp"
 #include "sim/state.hpp"
 
 namespace edsc::sim {
@@ -23,12 +24,20 @@ struct field_number {
 // A number as written on a control line: 12, -3, 0x1F, 1.5.
 [[nodiscard]] std::optional<field_number> parse_number(std::string_view text);
 
+// Why a value or a line is refused: the rule it breaks (sim-inputs-*,
+// docs/rules.md) and the message for the user.
+struct input_refusal {
+  diag_id id{};
+  std::string message;
+};
+
 // Each sets the data and fixes it (the counter pattern leaves it alone from
-// then on); the error for the user, or nullopt.
-[[nodiscard]] std::optional<std::string> set_bytes(assembly_instance& a, std::string_view hex);
-[[nodiscard]] std::optional<std::string> set_field(assembly_instance& a, std::string_view name, field_number v);
+// then on); the refusal, or nullopt.
+[[nodiscard]] std::optional<input_refusal> set_bytes(assembly_instance& a, std::string_view hex);
+[[nodiscard]] std::optional<input_refusal> set_field(assembly_instance& a, std::string_view name, field_number v);
 
 struct input_error {
+  diag_id id{};
   std::uint32_t line = 0, column = 0;  // 1-based; 0 when the error has no place in the file
   std::string message;
 };

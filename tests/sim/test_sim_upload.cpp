@@ -121,7 +121,7 @@ TEST_F(sim_tool, parameters_inputs_and_control_lines_reach_the_device) {
   EXPECT_TRUE(control("set 100 01 02", "instance 100 holds 32 bytes, 2 given")) << log();
   EXPECT_TRUE(control("set Assem100 Input_Data=0x12", "\"ok\":true,\"instance\":100,\"data\":\"12")) << log();
   EXPECT_EQ(ask(0x0E, 0x04, 100, 3).data[0], 0x12);
-  EXPECT_TRUE(control("set 100 Input_Data=256", "does not fit (0..255)")) << log();
+  EXPECT_TRUE(control("set 100 Input_Data=256", "does not fit (0..255)\",\"rule\":\"sim-inputs-value-range\"")) << log();
 }
 
 }  // namespace
