@@ -3,6 +3,8 @@
 // describe it (docs/live.md).
 #include <algorithm>
 #include <memory>
+#include <optional>
+#include <variant>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -15,14 +17,17 @@
 #include "driver/verify_live.hpp"
 #include "io/collect_inputs.hpp"
 #include "live/plan.hpp"
+#include "io/write_file.hpp"
 #include "live/probe.hpp"
+#include "live/session.hpp"
+#include "live/upload.hpp"
 
 namespace edsc::driver {
 
 namespace {
 
 struct probe_cli {
-  std::string host, library;
+  std::string host, library, upload_eds;
   double timeout_s = 3.0;
   bool udp = false;
   std::string format = "text";
@@ -95,6 +100,22 @@ std::string render_probe_text(const probe_cli& cli, const live::probe_result& r,
   return out;
 }
 
+// --upload-eds FILE: the device's own EDS from its File object, written
+// atomically; the bytes written, or the problem in words.
+std::variant<std::size_t, std::string> upload_eds(const probe_cli& cli, const live::endpoint& to,
+                                                  std::chrono::milliseconds timeout) {
+  auto opened = live::session::open(to, timeout);
+  if (auto* e = live::failed(opened)) return e->message;
+  auto& s = std::get<live::session>(opened);
+  auto file = live::upload_file(s);
+  s.close();
+  if (auto* e = live::failed(file)) return "upload of the EDS from the device: " + e->message;
+  const auto& bytes = std::get<cip::bytes>(file);
+  if (auto e = io::write_atomically(cli.upload_eds, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size())))
+    return e->message;
+  return bytes.size();
+}
+
 std::string render_probe_json(const probe_cli& cli, const live::probe_result& r, const std::vector<library_match>& lib) {
   const auto& id = r.identity;
   nlohmann::ordered_json j;
@@ -155,9 +176,26 @@ int run_probe(const probe_cli& cli) {
       result = std::get<live::probe_result>(again);
     }
   }
-  const auto text = cli.format == "json" ? render_probe_json(cli, result, lib) : render_probe_text(cli, result, lib, lib_problem);
+  std::optional<std::variant<std::size_t, std::string>> uploaded;
+  if (!cli.upload_eds.empty()) uploaded = upload_eds(cli, *to, opt.timeout);
+  auto text = cli.format == "json" ? render_probe_json(cli, result, lib) : render_probe_text(cli, result, lib, lib_problem);
+  if (uploaded && std::holds_alternative<std::size_t>(*uploaded)) {
+    const auto n = std::get<std::size_t>(*uploaded);
+    if (cli.format == "json") {
+      auto j = nlohmann::ordered_json::parse(text);
+      j["eds_upload"] = {{"path", cli.upload_eds}, {"size", n}};
+      text = j.dump(2) + "\n";
+    } else {
+      text += fmt::format("eds upload      {} bytes from File object instance 0x{:X} to {}\n", n, live::eds_file_instance,
+                          cli.upload_eds);
+    }
+  }
   if (!write_all(stdout, text)) return exit_failure;
   std::fflush(stdout);
+  if (uploaded && std::holds_alternative<std::string>(*uploaded)) {
+    print_error(std::get<std::string>(*uploaded));
+    return exit_failure;
+  }
   return exit_ok;
 }
 
@@ -176,6 +214,9 @@ void register_probe(CLI::App& app, command_action& run) {
       ->check(CLI::Range(0.05, 600.0).description(""))
       ->type_name("S");
   cmd->add_flag("--udp", cli->udp, "Ask the identity by UDP ListIdentity (unicast) instead of TCP");
+  cmd->add_option("--upload-eds", cli->upload_eds,
+                  "Upload the device's own EDS from its File object (class 0x37, instance 0xC8) into FILE")
+      ->type_name("FILE");
   cmd->callback([&run, cli] { run = [cli] { return run_probe(*cli); }; });
 }
 

@@ -1,20 +1,21 @@
 // `edsc sim FILE.eds`: the EDS answers on the network as an EtherNet/IP
 // adapter (docs/sim.md). Requests are handled by the pure functions of
 // compiler/sim; this file reads the file, the options and the signals.
-#include <cctype>
-#include <charconv>
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <memory>
-#include <sstream>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include "check/check_file.hpp"
+#include "diag/render_text.hpp"
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
+#include "sim/inputs.hpp"
 #include "sim/server.hpp"
 
 namespace edsc::driver {
@@ -23,6 +24,7 @@ namespace {
 
 struct sim_cli {
   std::string eds, address = "0.0.0.0", inputs;
+  bool control = false;
   std::uint16_t port = 44818;
   std::uint32_t serial = 1;
 };
@@ -30,45 +32,34 @@ struct sim_cli {
 std::atomic<bool> stop_requested{false};
 extern "C" void on_stop_signal(int) { stop_requested.store(true); }
 
-// --inputs FILE: {"100": "00 01 02 ..."}: fixed bytes of input assemblies
-// (hex, spaces allowed) instead of the counter pattern.
+// The byte offset of a 1-based line and column of `text` (clamped to its end).
+std::uint32_t offset_of(std::string_view text, std::uint32_t line, std::uint32_t column) {
+  std::size_t at = 0;
+  for (std::uint32_t l = 1; l < line && at < text.size(); ++l) {
+    const auto nl = text.find('\n', at);
+    at = nl == std::string_view::npos ? text.size() : nl + 1;
+  }
+  return static_cast<std::uint32_t>(std::min(text.size(), at + (column > 0 ? column - 1 : 0)));
+}
+
+// --inputs FILE (JSON or TOML, sim/inputs.hpp); a diagnostic with its rule
+// (sim-inputs-*) at the mistake when it does not fit the EDS.
 bool load_inputs(const std::string& path, sim::state& s) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  const auto j = nlohmann::json::parse(text.str(), nullptr, false);
-  if (!in || j.is_discarded() || !j.is_object()) {
-    print_error(fmt::format("--inputs {}: not a JSON object of instance: \"hex bytes\"", path));
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    print_error(fmt::format("--inputs {}: cannot read the file", path));
     return false;
   }
-  for (const auto& [key, value] : j.items()) {
-    std::uint32_t instance = 0;
-    const auto [p, ec] = std::from_chars(key.data(), key.data() + key.size(), instance);
-    auto* a = ec == std::errc() && p == key.data() + key.size() ? s.dev.assembly(instance) : nullptr;
-    if (a == nullptr || !value.is_string()) {
-      print_error(fmt::format("--inputs {}: \"{}\" is not an assembly instance of the EDS with a hex string", path, key));
-      return false;
-    }
-    cip::bytes b;
-    int nibble = -1;
-    for (const char c : value.get<std::string>()) {
-      const int v = std::isxdigit(static_cast<unsigned char>(c)) ? (std::isdigit(static_cast<unsigned char>(c)) ? c - '0' : (std::tolower(c) - 'a' + 10)) : -1;
-      if (v < 0) continue;
-      if (nibble < 0) nibble = v;
-      else {
-        b.push_back(static_cast<std::uint8_t>(nibble << 4 | v));
-        nibble = -1;
-      }
-    }
-    if (b.size() != a->data.size()) {
-      print_error(fmt::format("--inputs {}: instance {} holds {} bytes, the file gives {}", path, instance,
-                              a->data.size(), b.size()));
-      return false;
-    }
-    a->data = b;
-    a->fixed = true;
-  }
-  return true;
+  const source_file src(path, std::string{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()});
+  const auto e = sim::load_inputs(s.dev, path, src.text());
+  if (!e) return true;
+  const auto at = e->line > 0 ? offset_of(src.text(), e->line, e->column) : 0;
+  const span where{at, at < src.size() ? at + 1 : at};
+  std::string report;
+  render_text(src, make_diagnostic(e->id, where, e->message), text_style{use_color(color_mode::auto_detect, stderr)},
+              report);
+  write_all(stderr, report);
+  return false;
 }
 
 int run_sim(const sim_cli& cli) {
@@ -81,6 +72,10 @@ int run_sim(const sim_cli& cli) {
   }
   sim::state s;
   s.dev = sim::build_device(checked->dev, cli.serial);
+  // The File object serves the file as it is on disk, not as it was decoded.
+  std::ifstream raw(cli.eds, std::ios::binary);
+  s.dev.file.content.assign(std::istreambuf_iterator<char>(raw), std::istreambuf_iterator<char>());
+  s.dev.file.name = std::filesystem::path(cli.eds).filename().string();
   if (!cli.inputs.empty() && !load_inputs(cli.inputs, s)) return exit_failure;
   for (const auto& u : s.dev.skipped)
     std::fprintf(stderr, "edsc: note: Connection%u not served: %s\n", u.number, u.why.c_str());
@@ -91,6 +86,7 @@ int run_sim(const sim_cli& cli) {
   sim::server_options opt;
   opt.address = cli.address;
   opt.port = cli.port;
+  if (cli.control) opt.control_fd = 0;
   const auto problem = sim::serve(s, opt, stop_requested, [](const std::string& line) {
     std::fputs(line.c_str(), stdout);
     std::fputc('\n', stdout);
@@ -108,7 +104,8 @@ int run_sim(const sim_cli& cli) {
 void register_sim(CLI::App& app, command_action& run) {
   auto cli = std::make_shared<sim_cli>();
   auto* cmd = app.add_subcommand("sim", "Serve the EDS as a virtual EtherNet/IP device: identity, assemblies, "
-                                        "Forward_Open of every ConnectionN, class 1 I/O (docs/sim.md)");
+                                        "parameters, the EDS for upload, Forward_Open of every ConnectionN, "
+                                        "class 1 I/O (docs/sim.md)");
   cmd->add_option("file", cli->eds, "The EDS file the device is built from")->required();
   cmd->add_option("--address", cli->address, "IPv4 address to listen on (default 0.0.0.0: every interface)")
       ->type_name("ADDR");
@@ -116,8 +113,12 @@ void register_sim(CLI::App& app, command_action& run) {
       ->type_name("PORT");
   cmd->add_option("--serial", cli->serial, "Serial number the Identity object reports (default 1)")->type_name("N");
   cmd->add_option("--inputs", cli->inputs,
-                  "JSON file of fixed input data, {\"INSTANCE\": \"hex bytes\"}, instead of the counter pattern")
+                  "JSON or TOML (*.toml) file of fixed input data per assembly (100 or AssemN): hex bytes, or "
+                  "named fields of its members, instead of the counter pattern")
       ->type_name("FILE");
+  cmd->add_flag("--stdin", cli->control,
+                "Read control lines from standard input (set ASSEMBLY HEX... | set ASSEMBLY FIELD=NUMBER... | "
+                "get ASSEMBLY), each answered by a JSON line");
   cmd->callback([&run, cli] { run = [cli] { return run_sim(*cli); }; });
 }
 

@@ -32,7 +32,11 @@ void add_assembly(device& d, std::uint32_t instance, std::uint32_t size, assembl
     if (a->data.size() < size) a->data.resize(size, 0);
     return;
   }
-  d.assemblies.push_back({instance, role, cip::bytes(size, 0)});
+  assembly_instance a;
+  a.instance = instance;
+  a.role = role;
+  a.data.assign(size, 0);
+  d.assemblies.push_back(std::move(a));
 }
 
 }  // namespace
@@ -106,6 +110,12 @@ device build_device(const model::device& dev, std::uint32_t serial) {
   for (const auto& t : live::plan_assemblies(dev)) add_assembly(d, t.instance, t.eds_size, assembly_role::other);
   std::sort(d.assemblies.begin(), d.assemblies.end(),
             [](const auto& a, const auto& b) { return a.instance < b.instance; });
+  add_parameters(dev, d);
+  add_fields(dev, d);
+  if (const auto& r = dev.file.revision; r.ok() && r.kind == model::value_kind::revision) {
+    d.file.major = static_cast<std::uint8_t>(r.r.major);
+    d.file.minor = static_cast<std::uint8_t>(r.r.minor);
+  }
   return d;
 }
 

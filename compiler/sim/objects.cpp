@@ -1,6 +1,7 @@
 // Explicit requests: the path read, then the Identity object (class 1) from
 // [Device] and the Assembly object (class 4) with the EDS's sizes; the
-// Connection Manager (class 6) is in connection_manager.cpp.
+// Connection Manager (class 6), the Parameter object (0x0F) and the File
+// object (0x37) have files of their own.
 #include "sim/objects.hpp"
 
 #include <fmt/format.h>
@@ -112,6 +113,8 @@ bytes handle_cip(state& s, const link& l, cip::byte_view request, clock::time_po
     case 0x01: return identity_object(s, q.value(), *a);
     case 0x04: return assembly_object(s, q.value(), *a);
     case 0x06: return connection_manager(s, l, q.value(), *a, now);
+    case 0x0F: return parameter_object(s, q.value(), *a);
+    case 0x37: return file_object(s, q.value(), *a);
     default: return cip::encode_reply(q->service, general::path_unknown);
   }
 }

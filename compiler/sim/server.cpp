@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 
 #include "live/socket.hpp"
+#include "sim/inputs.hpp"
 
 namespace edsc::sim {
 
@@ -73,6 +74,26 @@ void handle_client(state& s, client& c, bool& drop, clock::time_point now) {
   if (c.in.size() > max_message) drop = true;
 }
 
+// Reads what the control descriptor has; answers each whole line. False at
+// the end of the input (or an error): the descriptor is not polled again.
+bool read_control(state& s, int fd, std::string& pending, const std::function<void(const std::string&)>& emit) {
+  char buf[4096];
+  const auto n = ::read(fd, buf, sizeof buf);
+  if (n < 0) return errno == EAGAIN || errno == EINTR;
+  if (n == 0) return false;
+  pending.append(buf, static_cast<std::size_t>(n));
+  for (auto nl = pending.find('\n'); nl != std::string::npos; nl = pending.find('\n')) {
+    const auto reply = control(s, std::string_view(pending).substr(0, nl));
+    if (!reply.empty()) emit(reply);
+    pending.erase(0, nl + 1);
+  }
+  if (pending.size() > 65536) {  // no line is this long: drop it rather than grow
+    pending.clear();
+    emit(R"({"event":"control","ok":false,"error":"a line longer than 64 KiB"})");
+  }
+  return true;
+}
+
 }  // namespace
 
 std::string serve(state& s, const server_options& opt, const std::atomic<bool>& stop,
@@ -96,6 +117,8 @@ std::string serve(state& s, const server_options& opt, const std::atomic<bool>& 
 
   std::vector<client> clients;
   std::uint64_t produced = 0;
+  int control_fd = opt.control_fd;
+  std::string control_pending;
   const auto idle = std::chrono::seconds(opt.idle_tcp_s);
   auto flush_log = [&] {
     for (const auto& line : s.log) emit(line);
@@ -116,7 +139,7 @@ std::string serve(state& s, const server_options& opt, const std::atomic<bool>& 
     auto wake = clock::now() + std::chrono::milliseconds(100);
     if (const auto d = next_deadline(s); d && *d < wake) wake = *d;
     const auto wait = std::chrono::duration_cast<std::chrono::microseconds>(wake - clock::now()).count();
-    std::vector<pollfd> fds = {{tcp.get(), POLLIN, 0}, {udp.get(), POLLIN, 0}, {io.get(), POLLIN, 0}};
+    std::vector<pollfd> fds = {{tcp.get(), POLLIN, 0}, {udp.get(), POLLIN, 0}, {io.get(), POLLIN, 0}, {control_fd, POLLIN, 0}};
     for (const auto& c : clients) fds.push_back({c.sock.get(), POLLIN, 0});
     // ppoll for sub-millisecond RPIs; a negative wait means a deadline is already due.
     timespec ts{0, wait > 0 ? static_cast<long>(wait % 1'000'000) * 1000 : 0};
@@ -152,9 +175,11 @@ std::string serve(state& s, const server_options& opt, const std::atomic<bool>& 
           if (n <= 0) break;
           consume_io(s, cip::byte_view(buf, static_cast<std::size_t>(n)), peer.sin_addr.s_addr, now);
         }
-      for (std::size_t i = 0; i + 3 < fds.size(); ++i) {  // clients accepted just now wait a turn
+      if ((fds[3].revents & (POLLIN | POLLHUP | POLLERR)) && !read_control(s, control_fd, control_pending, emit))
+        control_fd = -1;  // poll() skips a negative descriptor
+      for (std::size_t i = 0; i + 4 < fds.size(); ++i) {  // clients accepted just now wait a turn
         bool drop = false;
-        if (fds[3 + i].revents & (POLLIN | POLLHUP | POLLERR)) handle_client(s, clients[i], drop, now);
+        if (fds[4 + i].revents & (POLLIN | POLLHUP | POLLERR)) handle_client(s, clients[i], drop, now);
         if (drop) clients[i].sock = live::fd();
       }
     }

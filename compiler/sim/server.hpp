@@ -17,6 +17,9 @@ struct server_options {
   std::uint16_t io_port = 2222;
   // Seconds a TCP connection may stay silent before it is closed.
   int idle_tcp_s = 120;
+  // A descriptor of control lines (standard input with --stdin), -1 for none;
+  // each line goes to sim::control and its answer to `emit`.
+  int control_fd = -1;
 };
 
 // Serves until `stop` turns true; each JSON line of the state's log goes to

@@ -38,8 +38,18 @@ struct link {
   std::uint32_t session = 0;  // 0: none registered
 };
 
+// An upload of the File object's instance (file_object.cpp): one at a time,
+// as the object has one state.
+struct file_upload {
+  bool active = false, done = false;
+  std::uint8_t transfer_size = 0;
+  std::uint8_t next = 0;                  // the transfer number expected next
+  std::size_t offset = 0, last_offset = 0;  // bytes sent; where the last packet sent began
+};
+
 struct state {
   device dev;
+  file_upload upload;
   std::vector<open_connection> connections;
   std::uint32_t next_session = 0x5E550001, next_connection_id = 0x5E000001;
   std::size_t max_connections = 256;

@@ -107,6 +107,9 @@ TEST(check_cases, every_rule_has_a_triggering_case) {
       // What OpENer cannot serve (`edsc header --stack opener`): tests/stack/ and scripts/opener-coverage.
       "opener-connection-kind", "opener-connection-path", "opener-assembly-size", "opener-run-idle",
       "opener-no-connection",
+      // `edsc sim`'s --inputs files and control lines: tests/sim/test_sim_inputs.cpp.
+      "sim-inputs-syntax", "sim-inputs-unknown-assembly", "sim-inputs-unknown-field", "sim-inputs-value-range",
+      "sim-inputs-hex",
   };
   std::set<std::string_view> seen;
   for (const auto& path : case_files()) {

@@ -34,6 +34,7 @@
 #include "network/plan.hpp"
 #include "network/render_map.hpp"
 #include "parse/parser.hpp"
+#include "sim/inputs.hpp"
 #include "sim/state.hpp"
 #include "source/line_starts.hpp"
 #include "source/source_file.hpp"
@@ -357,9 +358,13 @@ Class1 = EtherNetIP;
 
 [Params]
 Param1 = 0,,,0x0000,0xC8,4,"RPI","","",1000,100000,20000,,,,,,,,,;
+Param2 = 0,,,0x0000,0xC3,2,"Speed","","",-100,100,-5,,,,,,,,,;
+Param3 = 0,,,0x0002,0xC6,1,"Mode","","",0,9,1,,,,,,,,,;
+Enum3 = 1,"one",4,"four";
+Param4 = 0,,,0x0000,0xCA,4,"Gain","","",,,1.5,,,,,,,,,;
 
 [Assembly]
-Assem100 = "Input",,8,0x0000,,,;
+Assem100 = "Input",,8,0x0000,,,16,Param2,8,Param3,32,Param4;
 Assem150 = "Output",,4,0x0000,,,;
 Assem151 = "Config",,2,0x0000,,,;
 
@@ -370,11 +375,17 @@ Connection2 = 0x02010002,0x44640305,Param1,0,,Param1,,Assem100,,,,,"Input only",
 
 // The simulator's request handling on any bytes (what a hostile scanner may
 // send): the first byte picks the door (TCP or UDP encapsulation, a bare CIP
-// request, a class 1 frame), the rest is the message. No crash, no stall, and
-// every encapsulation reply's length field counts its bytes.
+// request, a class 1 frame, a control line, CIP requests in a row each after
+// its length byte), the rest is the message. No crash, no stall, and every
+// encapsulation reply's length field counts its bytes.
 inline std::string sim_body(std::string_view input) {
   static const auto model = edit::analyze("fuzz.eds", std::string(sim_fuzz_eds));
-  static const auto prototype = sim::build_device(model->dev, 1);
+  static const auto prototype = [] {
+    auto d = sim::build_device(model->dev, 1);
+    d.file.name = "fuzz.eds";  // the File object serves the EDS
+    d.file.content.assign(sim_fuzz_eds.begin(), sim_fuzz_eds.end());
+    return d;
+  }();
   if (input.empty()) return {};
   sim::state s;
   s.dev = prototype;
@@ -383,7 +394,7 @@ inline std::string sim_body(std::string_view input) {
   const cip::byte_view b(reinterpret_cast<const std::uint8_t*>(input.data()) + 1, input.size() - 1);
   // A registered session and an open owner connection first, so deeper paths are reached.
   (void)sim::handle_encap(s, l, cip::encode_encap(cip::command::register_session, 0, {}, cip::register_session_data()), true, now);
-  switch (static_cast<std::uint8_t>(input[0]) % 4) {
+  switch (static_cast<std::uint8_t>(input[0]) % 6) {
     case 0:
     case 1: {
       const auto out = sim::handle_encap(s, l, b, input[0] % 4 == 0, now);
@@ -397,7 +408,19 @@ inline std::string sim_body(std::string_view input) {
       if (!cip::decode_reply(r, 0).ok()) return "a CIP reply the client cannot decode";
       break;
     }
-    default: sim::consume_io(s, b, l.peer_ip, now); break;
+    case 3: sim::consume_io(s, b, l.peer_ip, now); break;
+    case 4: {
+      const auto reply = sim::control(s, input.substr(1));
+      if (!reply.empty() && !nlohmann::json::accept(reply)) return "a control answer that is not JSON";
+      break;
+    }
+    default:  // an upload or a parameter change reaches its later states only after earlier requests
+      for (std::size_t at = 0; at < b.size();) {
+        const std::size_t n = std::min<std::size_t>(b[at], b.size() - at - 1);
+        if (!cip::decode_reply(sim::handle_cip(s, l, b.subspan(at + 1, n), now), 0).ok()) return "a CIP reply the client cannot decode";
+        at += 1 + n;
+      }
+      break;
   }
   (void)sim::produce_io(s, now + std::chrono::hours(1000));  // past the longest timeout (512 x 2^32 us)
   if (!s.connections.empty()) return "a connection outlived its timeout";

@@ -114,6 +114,19 @@ TEST_F(live_opener, probe_reads_identity_assemblies_and_matches_the_library) {
   EXPECT_NE(text.output.find("service       \"Communications\""), std::string::npos) << text.output;
 }
 
+// OpENer keeps no File object: the upload is refused in words, exit 2,
+// and no file is left behind (the probe's own findings still print).
+TEST_F(live_opener, upload_eds_from_a_device_without_a_file_object_is_refused) {
+  const auto out = net_->dir + "/uploaded.eds";
+  const auto r = run_edsc("probe " + device() + " --upload-eds " + quoted(out));
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("product name  \"OpENer PC\""), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("upload of the EDS from the device: Initiate_Upload of the File object refused: 0x"),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
 struct fault {
   const char* name;
   const char* set;     // the edit

@@ -46,6 +46,7 @@ TEST(FuzzRegressions, Fmt) { EXPECT_EQ(replay("fmt", fmt_body), 7u); }
 TEST(FuzzRegressions, Network) { EXPECT_EQ(replay("network", network_body), 1u); }
 TEST(FuzzRegressions, Diff) { EXPECT_EQ(replay("diff", diff_body), 1u); }
 TEST(FuzzRegressions, DiffSeedPairs) { EXPECT_EQ(replay("diff", diff_body, "seeds"), 2u); }
+TEST(FuzzRegressions, SimSeeds) { EXPECT_EQ(replay("sim", sim_body, "seeds"), 2u); }
 
 // Every folder is a target's and holds inputs: a new finding's folder is
 // replayed here without a new test, and no empty placeholder passes as one.

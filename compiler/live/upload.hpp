@@ -1,0 +1,19 @@
+#pragma once
+// "Upload EDS from device": the file a device keeps in its File object
+// (class 0x37, instance 0xC8 by convention), read by Initiate_Upload and
+// Upload_Transfer as a configuration tool does. The facts and what is
+// unconfirmed about them: compiler/sim/file_object.cpp and docs/sim.md.
+#include <cstdint>
+
+#include "cip/bytes.hpp"
+#include "live/session.hpp"
+
+namespace edsc::live {
+
+inline constexpr std::uint32_t eds_file_instance = 0xC8;
+
+// The whole file, its checksum checked; a refusal or a broken transfer is a
+// net_error in words.
+[[nodiscard]] result<cip::bytes> upload_file(session& s, std::uint32_t instance = eds_file_instance);
+
+}  // namespace edsc::live

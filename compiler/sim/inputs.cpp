@@ -1,0 +1,168 @@
+// Named fields of the assemblies (from the AssemN members that name a
+// ParamN) and setting input data by bytes or by field.
+#include "sim/inputs.hpp"
+
+#include <cctype>
+#include <charconv>
+#include <cstring>
+
+#include <fmt/format.h>
+
+#include "emit/header_parts.hpp"
+#include "live/plan.hpp"
+
+namespace edsc::sim {
+
+namespace {
+
+bool same_name(std::string_view given, std::string_view eds) {
+  if (given.size() != eds.size()) return false;
+  for (std::size_t i = 0; i < given.size(); ++i) {
+    const auto a = std::tolower(static_cast<unsigned char>(given[i]));
+    const auto b = std::tolower(static_cast<unsigned char>(eds[i]));
+    if (a != b && !(a == '_' && b == ' ')) return false;  // speed_limit names "Speed Limit"
+  }
+  return true;
+}
+
+std::string describe(const input_field& f) {
+  return f.name.empty() ? fmt::format("Param{}", f.param) : fmt::format("\"{}\" (Param{})", f.name, f.param);
+}
+
+void put_bits(cip::bytes& data, std::uint32_t at, std::uint32_t bits, std::uint64_t v) {
+  for (std::uint32_t i = 0; i < bits; ++i) {
+    const auto bit = at + i;
+    auto& byte = data[bit / 8];
+    const auto mask = static_cast<std::uint8_t>(1u << (bit % 8));
+    byte = static_cast<std::uint8_t>(((v >> i) & 1u) ? (byte | mask) : (byte & ~mask));
+  }
+}
+
+}  // namespace
+
+void add_fields(const model::device& dev, device& d) {
+  for (const auto& t : live::plan_assemblies(dev)) {
+    auto* a = d.assembly(t.instance);
+    if (a == nullptr || !a->fields.empty()) continue;
+    a->eds_number = t.assem->number;
+    std::uint64_t bit = 0;
+    for (const auto& m : t.assem->members) {
+      const auto bits = emit::number_or_param_default(dev, m.size).value_or(0);
+      const auto* r = m.ref.as_ref();
+      if (r != nullptr && r->kind == schema::ref_kind::param && r->resolved() && r->target < dev.params.size() &&
+          bits > 0 && bits <= 64 && bit + bits <= a->data.size() * 8) {
+        const auto& p = dev.params[r->target];
+        input_field f;
+        f.name = p.name.ok() ? std::string(p.name.text) : std::string();
+        f.param = p.number;
+        f.bit = static_cast<std::uint32_t>(bit);
+        f.bits = static_cast<std::uint32_t>(bits);
+        f.is_signed = p.type != nullptr && p.type->cls == schema::type_class::signed_int;
+        f.is_real = p.type != nullptr && p.type->cls == schema::type_class::real && (bits == 32 || bits == 64);
+        a->fields.push_back(std::move(f));
+      }
+      bit += bits;
+    }
+  }
+}
+
+assembly_instance* find_assembly(device& d, std::string_view key) {
+  const bool by_eds = key.size() > 5 && same_name(key.substr(0, 5), "Assem");
+  if (by_eds) key.remove_prefix(5);
+  std::uint32_t n = 0;
+  const auto [p, ec] = std::from_chars(key.data(), key.data() + key.size(), n);
+  if (ec != std::errc() || p != key.data() + key.size() || n == 0) return nullptr;
+  if (!by_eds) return d.assembly(n);
+  for (auto& a : d.assemblies)
+    if (a.eds_number == n) return &a;
+  return nullptr;
+}
+
+std::optional<field_number> parse_number(std::string_view t) {
+  field_number v;
+  const bool minus = !t.empty() && t[0] == '-';
+  auto body = minus ? t.substr(1) : t;
+  if (body.size() > 2 && body[0] == '0' && (body[1] == 'x' || body[1] == 'X')) {
+    std::uint64_t u = 0;
+    const auto [p, ec] = std::from_chars(body.data() + 2, body.data() + body.size(), u, 16);
+    if (ec != std::errc() || p != body.data() + body.size() || u > 0x7FFFFFFFFFFFFFFFULL) return std::nullopt;
+    v.integer = minus ? -static_cast<std::int64_t>(u) : static_cast<std::int64_t>(u);
+    return v;
+  }
+  const auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), v.integer);
+  if (ec == std::errc() && p == t.data() + t.size()) return v;
+  const auto [q, ec2] = std::from_chars(t.data(), t.data() + t.size(), v.real);
+  if (ec2 != std::errc() || q != t.data() + t.size()) return std::nullopt;
+  v.is_real = true;
+  return v;
+}
+
+std::optional<input_refusal> set_bytes(assembly_instance& a, std::string_view hex) {
+  cip::bytes b;
+  int nibble = -1;
+  for (const char c : hex) {
+    const auto u = static_cast<unsigned char>(c);
+    if (std::isspace(u)) continue;
+    if (!std::isxdigit(u))
+      return input_refusal{diag_id::sim_inputs_hex,
+                           fmt::format("'{}' is not a hex digit (bytes are written as \"01 02 0A\")", c)};
+    const int v = std::isdigit(u) ? c - '0' : std::tolower(u) - 'a' + 10;
+    if (nibble < 0) nibble = v;
+    else {
+      b.push_back(static_cast<std::uint8_t>(nibble << 4 | v));
+      nibble = -1;
+    }
+  }
+  if (nibble >= 0) return input_refusal{diag_id::sim_inputs_hex, "an odd number of hex digits"};
+  if (b.size() != a.data.size())
+    return input_refusal{diag_id::sim_inputs_hex,
+                         fmt::format("instance {} holds {} bytes, {} given", a.instance, a.data.size(), b.size())};
+  a.data = std::move(b);
+  a.fixed = true;
+  return std::nullopt;
+}
+
+std::optional<input_refusal> set_field(assembly_instance& a, std::string_view name, field_number v) {
+  const input_field* f = nullptr;
+  for (const auto& x : a.fields)
+    if (same_name(name, x.name) || same_name(name, fmt::format("Param{}", x.param))) {
+      f = &x;
+      break;
+    }
+  if (f == nullptr) {
+    std::string known;
+    for (const auto& x : a.fields) known += (known.empty() ? "" : ", ") + describe(x);
+    return input_refusal{diag_id::sim_inputs_unknown_field,
+                         fmt::format("instance {} has no field \"{}\"{}{}", a.instance, name,
+                                     known.empty() ? " (its AssemN names no parameters)" : "; its fields: ", known)};
+  }
+  std::uint64_t raw = 0;
+  if (f->is_real) {
+    const double d = v.is_real ? v.real : static_cast<double>(v.integer);
+    if (f->bits == 32) {
+      const auto x = static_cast<float>(d);
+      std::uint32_t u = 0;
+      std::memcpy(&u, &x, 4);
+      raw = u;
+    } else std::memcpy(&raw, &d, 8);
+  } else {
+    if (v.is_real)
+      return input_refusal{diag_id::sim_inputs_value_range, fmt::format("{} is a {}-bit integer field: {} is not an integer",
+                                                                        describe(*f), f->bits, v.real)};
+    const auto bits = f->bits;
+    const std::int64_t lo = f->is_signed ? (bits >= 64 ? INT64_MIN : -(std::int64_t{1} << (bits - 1))) : 0;
+    const std::int64_t hi = bits >= 64 ? INT64_MAX
+                            : f->is_signed ? (std::int64_t{1} << (bits - 1)) - 1
+                                           : static_cast<std::int64_t>((std::uint64_t{1} << bits) - 1);
+    if (v.integer < lo || v.integer > hi)
+      return input_refusal{diag_id::sim_inputs_value_range,
+                           fmt::format("{} is a {}-bit {} field: {} does not fit ({}..{})", describe(*f), bits,
+                                       f->is_signed ? "signed" : "unsigned", v.integer, lo, hi)};
+    raw = static_cast<std::uint64_t>(v.integer);
+  }
+  put_bits(a.data, f->bit, f->bits, raw);
+  a.fixed = true;
+  return std::nullopt;
+}
+
+}  // namespace edsc::sim
