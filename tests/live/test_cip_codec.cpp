@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 
 #include "cip/connection_manager.hpp"
+#include "cip/device_reply.hpp"
 #include "cip/encap.hpp"
 #include "cip/io_frame.hpp"
 #include "cip/message.hpp"
+#include "cip/request.hpp"
 #include "cip/status.hpp"
 #include "netns/live_support.hpp"
 
@@ -230,6 +232,57 @@ TEST(cip_status, words_for_codes) {
   EXPECT_EQ(general_status_text(0x08), "service not supported");
   EXPECT_EQ(encap_status_text(0x64), "invalid session handle");
   EXPECT_EQ(describe_status(0x01, std::vector<std::uint16_t>{0x9999}), "0x01 connection failure, extended 0x9999 (unknown code)");
+}
+
+TEST(cip_connection_manager, params32_every_field_both_ways) {
+  // 600 bytes | variable 1 << 25 | high 1 << 26 | multicast 1 << 29 |
+  // redundant owner 1 << 31 = 0x258 + 0x02000000 + 0x04000000 + 0x20000000
+  // + 0x80000000 = 0xA6000258. High (1) rather than urgent (3) so that
+  // bits 25-26 read as priority (3) would differ from bits 26-27 (1).
+  const net_params p{600, true, conn_priority::high, conn_type::multicast, true};
+  EXPECT_EQ(encode_params32(p), 0xA6000258u);
+  const auto back = decode_params32(0xA6000258u);
+  EXPECT_EQ(back.size, 600);
+  EXPECT_TRUE(back.variable);
+  EXPECT_EQ(back.priority, conn_priority::high);
+  EXPECT_EQ(back.type, conn_type::multicast);
+  EXPECT_TRUE(back.redundant_owner);
+}
+
+TEST(cip_connection_manager, data_segment_of_an_odd_length_is_padded_to_words) {
+  // 0x80, 2 words for 3 bytes, the bytes, one pad byte
+  bytes path;
+  put_data_segment(path, unhex("AA BB CC"));
+  EXPECT_EQ(hex(path), "80 02 AA BB CC 00");
+}
+
+TEST(cip_encap, list_services_reply_as_a_device_sends_it) {
+  // The bytes cip_encap.list_services_reply decodes: one item 0x0100 of 20
+  // bytes, version 1, capability bits 5 and 8 (0x0120), "Communications".
+  EXPECT_EQ(hex(list_services_reply()),
+            "01 00 00 01 14 00 01 00 20 01 43 6F 6D 6D 75 6E 69 63 61 74 69 6F 6E 73 00 00");
+}
+
+TEST(cip_message, electronic_key_segment_decodes_and_only_format_4) {
+  // 34 04, vendor 1, type 12, code 65001 (E9 FD), major 0x82 = 2 + compatible, minor 3
+  const auto path = unhex("34 04 01 00 0C 00 E9 FD 82 03 20 04");
+  auto segs = decode_path(path, 0);
+  ASSERT_TRUE(segs.ok()) << segs.error().what;
+  ASSERT_EQ(segs->size(), 2u);
+  const auto& k = segs->front().key;
+  EXPECT_EQ(segs->front().type, segment_type::key);
+  EXPECT_EQ(k.vendor, 1);
+  EXPECT_EQ(k.device_type, 12);
+  EXPECT_EQ(k.product_code, 65001);
+  EXPECT_EQ(k.major, 2);
+  EXPECT_TRUE(k.compatible);
+  EXPECT_EQ(k.minor, 3);
+  EXPECT_EQ(segs.value()[1].type, segment_type::class_id);
+  EXPECT_EQ(segs.value()[1].value, 4u);
+  // format 5 is not read; the error points at the segment's first byte
+  auto bad = decode_path(unhex("34 05 01 00 0C 00 E9 FD 82 03"), 10);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.error().offset, 10u);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <thread>
 
+#include "cip/device_reply.hpp"
 #include "cip/encap.hpp"
 #include "cip/io_frame.hpp"
 #include "netns/live_support.hpp"
@@ -114,6 +115,45 @@ TEST(live_fake_device, wrong_frames_are_found_at_the_connection) {
       << r.output;
   // 50 ms between frames against 10 ms granted: slower than twice the interval, however slow this host is.
   EXPECT_NE(r.output.find("ms granted [live-io-rate]"), std::string::npos) << r.output;
+}
+
+// Answers what `edsc probe` asks: OpENer's identity, ListServices, an
+// Assembly Max Instance of 2, and attribute 4 (size) of instance 1 in one
+// byte where a size takes two; instance 2 answers 32 bytes properly.
+void short_size_device(int s, const std::atomic<bool>& stop) {
+  for (;;) {
+    const auto req = read_message(s, stop);
+    if (req.size() < cip::encap_header_size) return;
+    const auto command = static_cast<std::uint16_t>(req[0] | (req[1] << 8));
+    if (command == 0x0065 || command == 0x0004) {  // RegisterSession, ListServices
+      const auto data = command == 0x0065 ? cip::bytes{1, 0, 0, 0} : cip::list_services_reply();
+      send_bytes(s, reply_to(req, command, 0x1234, data));
+      continue;
+    }
+    if (command != 0x006F || req.size() < 24 + 16 + 2) return;
+    const cip::bytes request(req.begin() + 24 + 16, req.end());
+    const auto service = request[0];
+    cip::bytes answer;
+    if (service == 0x01) {
+      answer = cip_reply(service, unhex("01 00 0C 00 E9 FD 02 03 30 00 15 CD 5B 07 09 4F 70 45 4E 65 72 20 50 43"));
+    } else if (service == 0x0E && request.size() >= 8) {  // path 20 04 24 <instance> 30 <attribute>
+      const auto instance = request[5], attribute = request[7];
+      if (instance == 0 && attribute == 2) answer = cip_reply(service, {2, 0});
+      else if (instance == 1) answer = cip_reply(service, {0x20});
+      else answer = cip_reply(service, {0x20, 0});
+    } else {
+      answer = cip_reply(service, {}, 0x08);
+    }
+    send_bytes(s, reply_to(req, 0x006F, 0x1234, cip::send_rr_data(answer, 0)));
+  }
+}
+
+TEST(live_fake_device, probe_skips_an_assembly_size_of_one_byte) {
+  loopback_server device(short_size_device);
+  const auto r = run_edsc("probe " + device.address() + " --timeout 2");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("      2: 32\n"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("      1: "), std::string::npos) << r.output;
 }
 
 }  // namespace

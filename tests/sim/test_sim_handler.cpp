@@ -128,6 +128,13 @@ TEST_F(sim_handler, assemblies_read_and_written_with_size_checks) {
   EXPECT_NE(s_.log.back().find("\"event\":\"output\""), std::string::npos) << s_.log.back();
 }
 
+TEST_F(sim_handler, assemblies_start_as_zeros) {
+  // Nothing has been written to the output (150) or configuration (151)
+  // assemblies yet: their data is all zero bytes, 32 and 10 of them.
+  EXPECT_EQ(ask(cip::encode_request(0x0E, cip::logical_path(4, 150, 3))).data, cip::bytes(32, 0));
+  EXPECT_EQ(s_.dev.assembly(151)->data, cip::bytes(10, 0));
+}
+
 // The fault catalogue of docs/live.md, reversed: what OpENer answered there.
 TEST_F(sim_handler, forward_open_refusals_are_openers) {
   struct fault {
