@@ -51,8 +51,6 @@ void builder::report(diag_id id, span where, std::string message, const char* in
 
 // ---- trivia and recovery -------------------------------------------------
 
-void builder::trivia(token_kind k, span s) { push(k, s); }
-
 void builder::stray(span s) {
   close_entry(false);
   push(token_kind::skipped, s);

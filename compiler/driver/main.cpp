@@ -1,6 +1,7 @@
 #include <cstdio>
 #include <exception>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
@@ -14,23 +15,41 @@ namespace {
 
 using namespace edsc::driver;
 
-void register_all(CLI::App& app, command_action& run) {
-  register_check(app, run);
-  register_edit(app, run);
-  register_dump(app, run);
-  register_header(app, run);
-  register_rules(app, run);
-  register_fix(app, run);
-  register_fmt(app, run);
-  register_new(app, run);
-  register_verify(app, run);
-  register_lsp(app, run);
-  register_net(app, run);
-  register_doc(app, run);
-  register_diff(app, run);
-  register_probe(app, run);
-  register_sim(app, run);
-  register_completions(app, run);
+using registrar = void (*)(CLI::App&, command_action&);
+struct command_entry {
+  std::string_view name;
+  registrar add;
+};
+// In the order `edsc --help` lists them.
+constexpr command_entry commands[] = {
+    {"check", register_check}, {"edit", register_edit},       {"dump", register_dump},
+    {"header", register_header}, {"rules", register_rules},   {"fix", register_fix},
+    {"fmt", register_fmt},       {"new", register_new},       {"verify", register_verify},
+    {"lsp", register_lsp},       {"net", register_net},       {"doc", register_doc},
+    {"diff", register_diff},     {"probe", register_probe},   {"sim", register_sim},
+    {"completions", register_completions},
+};
+
+// Building every command's options costs more than the rest of a small run,
+// so only the command named is built when nothing else could tell: its name
+// is the first argument and no other argument names a command (CLI11 would
+// otherwise consider the sibling). `--version` alone needs none; help,
+// completions and anything unusual get the whole table.
+void register_commands(CLI::App& app, command_action& run, const std::vector<const char*>& args) {
+  if (args.size() == 2 && std::string_view(args[1]) == "--version") return;
+  const command_entry* named = nullptr;
+  int words_naming_commands = 0;
+  for (std::size_t i = 1; i < args.size(); ++i)
+    for (const auto& c : commands)
+      if (std::string_view(args[i]) == c.name) {
+        ++words_naming_commands;
+        if (i == 1) named = &c;
+      }
+  if (named != nullptr && words_naming_commands == 1 && named->name != "completions") {
+    named->add(app, run);
+    return;
+  }
+  for (const auto& c : commands) c.add(app, run);
 }
 
 // `edsc help [COMMAND...]` is `edsc [COMMAND...] --help`, as in git and cargo.
@@ -50,8 +69,8 @@ int run_main(int argc, char** argv) {
   app.require_subcommand(1);
   app.footer("edsc help COMMAND (or edsc COMMAND --help) describes one command; docs/cli.md all of them.");
   command_action run;
-  register_all(app, run);
   auto args = expand_help(argc, argv);
+  register_commands(app, run, args);
   const int n = static_cast<int>(args.size());
   if (auto err = unknown_command(app, n, args.data())) {
     print_error(*err);

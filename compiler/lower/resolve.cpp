@@ -24,8 +24,7 @@ void add_fixed(model::device& dev, const Vec& vec, ref_kind k) {
 }  // namespace
 
 void build_index(model::device& dev) {
-  dev.index.clear();
-  dev.index.reserve(dev.params.size() + dev.enums.size() + dev.assemblies.size() + 64);
+  dev.index.reset(dev.params.size() + dev.enums.size() + dev.assemblies.size() + dev.connections.size() + 64);
   add_all(dev, dev.params, [](const model::param& p) {
     return static_cast<ref_kind>(static_cast<int>(ref_kind::param) + static_cast<int>(p.kind));
   });

@@ -1,12 +1,14 @@
 #include "lsp/jsonrpc.hpp"
 
+#include "lsp/json_long_strings.hpp"
+
 namespace edsc::lsp {
 
 std::string dump(const json& j) { return j.dump(-1, ' ', false, json::error_handler_t::replace); }
 
 incoming parse_incoming(std::string_view body) {
   incoming in;
-  json j = json::parse(body, nullptr, false);
+  json j = parse_json(body);
   if (j.is_discarded()) {
     in.code = error_code::parse_error;
     in.error = "the message is not valid JSON";

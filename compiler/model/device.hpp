@@ -3,7 +3,6 @@
 #include <deque>
 #include <string>
 #include <string_view>
-#include <unordered_map>
 #include <vector>
 
 #include "model/assembly.hpp"
@@ -16,6 +15,61 @@
 #include "model/port.hpp"
 #include "model/value.hpp"
 #include "schema/schema.hpp"
+
+namespace edsc::model {
+
+// Key -> index, for the reference targets: one flat open-addressing table
+// (linear probing, at most half full) instead of a node per entry, since a
+// large file has a hundred thousand targets and is looked up once per
+// reference. Keys are device::key values, which never equal `empty_key`.
+class ref_index {
+ public:
+  // Forgets everything; room for `expected` keys before the first growth.
+  void reset(std::size_t expected) {
+    std::size_t cap = 64;
+    while (cap < expected * 2) cap *= 2;
+    slots_.assign(cap, slot{});
+    size_ = 0;
+  }
+  // Adds key -> value unless the key is present (the first one wins).
+  void try_emplace(std::uint64_t key, std::uint32_t value) {
+    if ((size_ + 1) * 2 > slots_.size()) grow();
+    slot& s = slots_[position(key)];
+    if (s.key == key) return;
+    s = {key, value};
+    ++size_;
+  }
+  [[nodiscard]] std::uint32_t find(std::uint64_t key) const {
+    if (slots_.empty()) return 0xFFFFFFFFu;
+    const slot& s = slots_[position(key)];
+    return s.key == key ? s.value : 0xFFFFFFFFu;
+  }
+  [[nodiscard]] std::size_t size() const { return size_; }
+
+ private:
+  static constexpr std::uint64_t empty_key = ~std::uint64_t{0};
+  struct slot {
+    std::uint64_t key = empty_key;
+    std::uint32_t value = 0;
+  };
+  // The slot holding `key`, or the empty slot where it would go.
+  [[nodiscard]] std::size_t position(std::uint64_t key) const {
+    const std::size_t mask = slots_.size() - 1;
+    std::size_t i = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 32) & mask;
+    while (slots_[i].key != key && slots_[i].key != empty_key) i = (i + 1) & mask;
+    return i;
+  }
+  void grow() {
+    std::vector<slot> old = std::move(slots_);
+    slots_.assign(old.empty() ? 64 : old.size() * 2, slot{});
+    for (const slot& s : old)
+      if (s.key != empty_key) slots_[position(s.key)] = s;
+  }
+  std::vector<slot> slots_;
+  std::size_t size_ = 0;
+};
+
+}  // namespace edsc::model
 
 namespace edsc::cst {
 struct tree;
@@ -94,12 +148,9 @@ struct device {
 
   // Reference targets: (kind, N) -> index in the vector holding that kind.
   // The first definition wins when a keyword is duplicated.
-  std::unordered_map<std::uint64_t, std::uint32_t> index;
+  ref_index index;
 
-  [[nodiscard]] std::uint32_t find(schema::ref_kind k, std::uint32_t n) const {
-    const auto it = index.find(key(k, n));
-    return it == index.end() ? none : it->second;
-  }
+  [[nodiscard]] std::uint32_t find(schema::ref_kind k, std::uint32_t n) const { return index.find(key(k, n)); }
   [[nodiscard]] const param* find_param(std::uint32_t n) const {
     const auto i = find(schema::ref_kind::param, n);
     return i == none ? nullptr : &params[i];

@@ -1,6 +1,8 @@
 // The line scan shared by diagnostics and the language server.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "source/line_starts.hpp"
 
 namespace {
@@ -37,6 +39,27 @@ TEST(line_starts, terminator_at_end_opens_an_empty_last_line) {
 TEST(line_starts, mixed_terminators) {
   // a LF b CRLF c CR d
   EXPECT_EQ(edsc::line_starts("a\nb\r\nc\rd"), (starts{0, 2, 5, 7}));
+}
+
+// Every text of up to 8 bytes over {a, CR, LF}: the scan agrees with the
+// definition read one byte at a time.
+TEST(line_starts, agrees_with_the_byte_by_byte_definition) {
+  auto reference = [](const std::string& t) {
+    starts s{0};
+    for (std::size_t i = 0; i < t.size(); ++i)
+      if (t[i] == '\n' || (t[i] == '\r' && (i + 1 == t.size() || t[i + 1] != '\n'))) s.push_back(static_cast<std::uint32_t>(i + 1));
+    return s;
+  };
+  const char alphabet[] = {'a', '\r', '\n'};
+  for (int len = 0; len <= 8; ++len) {
+    int count = 1;
+    for (int i = 0; i < len; ++i) count *= 3;
+    for (int code = 0; code < count; ++code) {
+      std::string t;
+      for (int i = 0, c = code; i < len; ++i, c /= 3) t += alphabet[c % 3];
+      ASSERT_EQ(edsc::line_starts(t), reference(t)) << testing::PrintToString(t);
+    }
+  }
 }
 
 }  // namespace

@@ -1,0 +1,222 @@
+#include "lsp/json_long_strings.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace edsc::lsp {
+
+namespace {
+
+// Strings shorter than this are left to the library: they are not worth a
+// second pass.
+constexpr std::size_t long_string = 1024;
+
+int hex_digit(char c) {
+  if (c >= '0' && c <= '9') return c - '0';
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+  return -1;
+}
+
+// Whether any of the eight bytes at p ends a run of plain bytes: a control
+// character, a quote, a backslash or a non-ASCII byte (bit tricks on one
+// 64-bit word; exact for "any", which is all that is asked).
+bool has_special_byte(const char* p) {
+  constexpr std::uint64_t ones = 0x0101010101010101ull, high = 0x8080808080808080ull;
+  std::uint64_t x;
+  std::memcpy(&x, p, sizeof x);
+  const auto has_zero = [&](std::uint64_t v) { return (v - ones) & ~v & high; };
+  const std::uint64_t below_space = (x - ones * 0x20) & ~x & high;
+  return (below_space | has_zero(x ^ (ones * '"')) | has_zero(x ^ (ones * '\\')) | (x & high)) != 0;
+}
+
+// The four hex digits of a \u escape at raw[i..i+4); -1 when malformed.
+long hex4(std::string_view raw, std::size_t i) {
+  if (i + 4 > raw.size()) return -1;
+  long v = 0;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const int d = hex_digit(raw[i + k]);
+    if (d < 0) return -1;
+    v = v * 16 + d;
+  }
+  return v;
+}
+
+void append_utf8(std::string& out, unsigned long cp) {
+  if (cp < 0x80) {
+    out += static_cast<char>(cp);
+  } else if (cp < 0x800) {
+    out += static_cast<char>(0xC0 | (cp >> 6));
+    out += static_cast<char>(0x80 | (cp & 0x3F));
+  } else if (cp < 0x10000) {
+    out += static_cast<char>(0xE0 | (cp >> 12));
+    out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (cp & 0x3F));
+  } else {
+    out += static_cast<char>(0xF0 | (cp >> 18));
+    out += static_cast<char>(0x80 | ((cp >> 12) & 0x3F));
+    out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (cp & 0x3F));
+  }
+}
+
+// Length of the well-formed UTF-8 sequence at s[i] (Unicode table 3-7), or 0.
+std::size_t utf8_length(std::string_view s, std::size_t i) {
+  const auto b = [&](std::size_t k) { return static_cast<unsigned char>(s[i + k]); };
+  const auto in = [](unsigned char c, unsigned lo, unsigned hi) { return c >= lo && c <= hi; };
+  const unsigned char c = b(0);
+  const std::size_t left = s.size() - i;
+  if (in(c, 0xC2, 0xDF)) return left >= 2 && in(b(1), 0x80, 0xBF) ? 2 : 0;
+  if (c >= 0xE0 && c <= 0xEF) {
+    if (left < 3) return 0;
+    const unsigned lo = c == 0xE0 ? 0xA0 : 0x80, hi = c == 0xED ? 0x9F : 0xBF;
+    return in(b(1), lo, hi) && in(b(2), 0x80, 0xBF) ? 3 : 0;
+  }
+  if (c >= 0xF0 && c <= 0xF4) {
+    if (left < 4) return 0;
+    const unsigned lo = c == 0xF0 ? 0x90 : 0x80, hi = c == 0xF4 ? 0x8F : 0xBF;
+    return in(b(1), lo, hi) && in(b(2), 0x80, 0xBF) && in(b(3), 0x80, 0xBF) ? 4 : 0;
+  }
+  return 0;
+}
+
+// Where the string opened by the quote at body[open] closes (its closing
+// quote), or npos. Only quotes and backslashes matter here: decoding checks
+// the rest.
+std::size_t string_end(std::string_view body, std::size_t open) {
+  for (std::size_t i = open + 1; i < body.size();) {
+    const void* q = std::memchr(body.data() + i, '"', body.size() - i);
+    if (q == nullptr) return std::string_view::npos;
+    const auto at = static_cast<std::size_t>(static_cast<const char*>(q) - body.data());
+    std::size_t backslashes = 0;
+    while (at - backslashes > open + 1 && body[at - backslashes - 1] == '\\') ++backslashes;
+    if (backslashes % 2 == 0) return at;
+    i = at + 1;
+  }
+  return std::string_view::npos;
+}
+
+std::string placeholder(std::size_t i) { return "\x01" "edsc-long-string-" + std::to_string(i); }
+
+// Puts the decoded strings back where their placeholders are; false unless
+// each placeholder is found exactly once, as a value. A stack, not
+// recursion: a message may nest as deep as it likes.
+bool restore(nlohmann::json& root, std::vector<std::string>& strings) {
+  std::vector<bool> found(strings.size(), false);
+  std::vector<nlohmann::json*> todo{&root};
+  while (!todo.empty()) {
+    auto& j = *todo.back();
+    todo.pop_back();
+    if (j.is_structured()) {
+      for (auto& child : j) todo.push_back(&child);
+      continue;
+    }
+    if (!j.is_string()) continue;
+    const auto& s = j.get_ref<const std::string&>();
+    for (std::size_t i = 0; i < strings.size(); ++i)
+      if (s == placeholder(i)) {
+        if (found[i]) return false;
+        found[i] = true;
+        j = std::move(strings[i]);
+        break;
+      }
+  }
+  return std::find(found.begin(), found.end(), false) == found.end();
+}
+
+}  // namespace
+
+bool decode_json_string(std::string_view raw, std::string& out) {
+  out.clear();
+  out.reserve(raw.size());
+  for (std::size_t i = 0; i < raw.size();) {
+    // A run of printable ASCII is copied as it is, found eight bytes at a time.
+    std::size_t run = i;
+    while (run + 8 <= raw.size() && !has_special_byte(raw.data() + run)) run += 8;
+    while (run < raw.size()) {
+      const auto c = static_cast<unsigned char>(raw[run]);
+      if (c < 0x20 || c >= 0x80 || c == '\\' || c == '"') break;
+      ++run;
+    }
+    out.append(raw.data() + i, run - i);
+    i = run;
+    if (i == raw.size()) break;
+    const auto c = static_cast<unsigned char>(raw[i]);
+    if (c >= 0x80) {
+      const std::size_t n = utf8_length(raw, i);
+      if (n == 0) return false;
+      out.append(raw.data() + i, n);
+      i += n;
+      continue;
+    }
+    if (c != '\\' || i + 1 == raw.size()) return false;  // a control character or a quote
+    const char e = raw[i + 1];
+    i += 2;
+    switch (e) {
+      case '"': out += '"'; break;
+      case '\\': out += '\\'; break;
+      case '/': out += '/'; break;
+      case 'b': out += '\b'; break;
+      case 'f': out += '\f'; break;
+      case 'n': out += '\n'; break;
+      case 'r': out += '\r'; break;
+      case 't': out += '\t'; break;
+      case 'u': {
+        const long hi = hex4(raw, i);
+        if (hi < 0) return false;
+        i += 4;
+        if (hi >= 0xDC00 && hi <= 0xDFFF) return false;
+        if (hi >= 0xD800 && hi <= 0xDBFF) {
+          if (i + 2 > raw.size() || raw[i] != '\\' || raw[i + 1] != 'u') return false;
+          const long lo = hex4(raw, i + 2);
+          if (lo < 0xDC00 || lo > 0xDFFF) return false;
+          i += 6;
+          append_utf8(out, 0x10000 + ((static_cast<unsigned long>(hi) - 0xD800) << 10) +
+                               (static_cast<unsigned long>(lo) - 0xDC00));
+        } else {
+          append_utf8(out, static_cast<unsigned long>(hi));
+        }
+        break;
+      }
+      default: return false;
+    }
+  }
+  return true;
+}
+
+nlohmann::json parse_json(std::string_view body) {
+  // Every quote outside a string opens one, in any JSON text, so strings are
+  // found without parsing; each long one that decodes becomes a short
+  // placeholder the library parses instead.
+  std::string rest;
+  std::vector<std::string> strings;
+  std::size_t copied = 0;
+  for (std::size_t i = 0; i < body.size();) {
+    const void* q = std::memchr(body.data() + i, '"', body.size() - i);
+    if (q == nullptr) break;
+    const auto open = static_cast<std::size_t>(static_cast<const char*>(q) - body.data());
+    const auto close = string_end(body, open);
+    if (close == std::string_view::npos) break;
+    i = close + 1;
+    if (close - open - 1 < long_string) continue;
+    std::string decoded;
+    if (!decode_json_string(body.substr(open + 1, close - open - 1), decoded)) return nlohmann::json::parse(body, nullptr, false);
+    rest.append(body.data() + copied, open - copied);
+    rest += '"';
+    rest += "\\u0001" + placeholder(strings.size()).substr(1);
+    rest += '"';
+    copied = close + 1;
+    strings.push_back(std::move(decoded));
+  }
+  if (strings.empty()) return nlohmann::json::parse(body, nullptr, false);
+  rest.append(body.data() + copied, body.size() - copied);
+  auto j = nlohmann::json::parse(rest, nullptr, false);
+  if (j.is_discarded()) return j;  // the long strings were valid, so the rest was not
+  if (!restore(j, strings)) return nlohmann::json::parse(body, nullptr, false);
+  return j;
+}
+
+}  // namespace edsc::lsp
