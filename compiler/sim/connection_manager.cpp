@@ -152,7 +152,11 @@ bytes forward_open(state& s, const link& l, const cip::request& q, clock::time_p
   oc.to_rpi_us = fo.to_rpi_us;
   if (transport_class == 3) {
     // Explicit messaging: a class 3 connection to the Message Router.
-    const std::vector<cip::path_segment> router{{cip::segment_type::class_id, 2}, {cip::segment_type::instance, 1}};
+    cip::path_segment router_class, router_instance;
+    router_class.value = 2;  // type is class_id by default
+    router_instance.type = cip::segment_type::instance;
+    router_instance.value = 1;
+    const std::vector<cip::path_segment> router{router_class, router_instance};
     if (app != router) return refuse(q, fo, {ext::inconsistent_path, {}});
     if (s.connections.size() >= s.max_connections) return refuse(q, fo, {ext::out_of_connections, {}});
     oc.ot_id = new_id();

@@ -16,7 +16,9 @@ void expect_same(const std::string& body) {
   const json want = json::parse(body, nullptr, false);
   const json got = edsc::lsp::parse_json(body);
   ASSERT_EQ(got.is_discarded(), want.is_discarded()) << body.substr(0, 200);
-  if (!want.is_discarded()) EXPECT_EQ(got, want) << body.substr(0, 200);
+  if (!want.is_discarded()) {
+    EXPECT_EQ(got, want) << body.substr(0, 200);
+  }
 }
 
 const std::string pad(2000, 'x');
