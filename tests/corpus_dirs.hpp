@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 #include <vector>
+#include "test_paths.hpp"
 
 // Every N-th file of each corpus is what a corpus-wide test walks (see
 // sample() below). The build sets it: 1 (every file) normally, more under the
@@ -17,7 +18,7 @@
 
 namespace edsc::corpora {
 
-inline constexpr const char* dirs[] = {EDSC_CORPUS_DIR, EDSC_CORPUS_ROCKWELL_DIR};
+inline const char* const dirs[] = {EDSC_CORPUS_DIR, EDSC_CORPUS_ROCKWELL_DIR};
 inline constexpr std::size_t counts[] = {117, 60};  // files per folder of dirs
 inline constexpr std::size_t file_count = counts[0] + counts[1];
 // The two files of the general corpus with syntax errors.

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "corpus_dirs.hpp"
+#include "test_paths.hpp"
 
 namespace authoring {
 

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include "authoring_support.hpp"
+#include "test_paths.hpp"
 
 namespace authoring {
 namespace {

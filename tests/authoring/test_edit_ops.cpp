@@ -5,6 +5,7 @@
 #include "edit/editor.hpp"
 #include "edit/locate.hpp"
 #include "edit/splice.hpp"
+#include "test_paths.hpp"
 
 namespace authoring {
 namespace {

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "authoring_support.hpp"
+#include "test_paths.hpp"
 
 namespace authoring {
 namespace {

@@ -10,6 +10,7 @@
 
 #include "check/check_file.hpp"
 #include "check/verify.hpp"
+#include "test_paths.hpp"
 
 namespace {
 

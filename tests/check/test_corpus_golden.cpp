@@ -27,6 +27,7 @@
 #include "check/check_file.hpp"
 #include "corpus_dirs.hpp"
 #include "golden.hpp"
+#include "test_paths.hpp"
 
 namespace {
 

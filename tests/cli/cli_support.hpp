@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "time_scale.hpp"
+#include "test_paths.hpp"
 
 extern char** environ;
 

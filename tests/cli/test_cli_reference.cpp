@@ -2,6 +2,7 @@
 // lists has its section, and every option its --help shows is named in that
 // section, so the two cannot drift apart.
 #include "cli/cli_support.hpp"
+#include "test_paths.hpp"
 
 namespace {
 

@@ -2,6 +2,7 @@
 // pipe (editors, shell pipelines), is named <stdin> or --stdin-filename in
 // what edsc prints, and exits as the same file named on the command line would.
 #include "cli/cli_support.hpp"
+#include "test_paths.hpp"
 
 namespace {
 

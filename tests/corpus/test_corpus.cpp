@@ -9,6 +9,7 @@
 
 #include "corpus_dirs.hpp"
 #include "parse_helpers.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::test {
 namespace {

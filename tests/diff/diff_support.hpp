@@ -12,6 +12,7 @@
 
 #include "diff/diff.hpp"
 #include "edit/analyze.hpp"
+#include "test_paths.hpp"
 
 namespace diff_test {
 

@@ -2,6 +2,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_support.hpp"
+#include "test_paths.hpp"
 
 using namespace edsc::cli_test;
 

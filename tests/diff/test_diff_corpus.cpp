@@ -8,6 +8,7 @@
 #include "corpus_dirs.hpp"
 #include "diff_support.hpp"
 #include "edit/format.hpp"
+#include "test_paths.hpp"
 
 using namespace diff_test;
 

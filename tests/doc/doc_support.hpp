@@ -7,6 +7,7 @@
 #include "check/check_file.hpp"
 #include "doc/render.hpp"
 #include "emit/emit_support.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::doc_test {
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "doc_support.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::doc_test {
 namespace {

@@ -9,6 +9,7 @@
 #include <string>
 
 #include <unistd.h>
+#include "test_paths.hpp"
 
 namespace edsc::test {
 

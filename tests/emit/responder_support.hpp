@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "emit/emit_support.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::test {
 

@@ -6,6 +6,7 @@
 #include <chrono>
 
 #include "emit_support.hpp"
+#include "test_paths.hpp"
 
 using namespace edsc::test;
 

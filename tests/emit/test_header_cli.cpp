@@ -4,6 +4,7 @@
 #include "emit/c_text.hpp"
 #include "emit/sha256.hpp"
 #include "emit_support.hpp"
+#include "test_paths.hpp"
 
 using namespace edsc;
 using namespace edsc::test;

@@ -8,6 +8,7 @@
 
 #include "emit_support.hpp"
 #include "responder_support.hpp"
+#include "test_paths.hpp"
 
 using namespace edsc::test;
 

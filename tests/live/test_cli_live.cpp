@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "netns/run_edsc.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::live_test {
 namespace {

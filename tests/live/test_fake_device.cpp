@@ -14,6 +14,7 @@
 #include "netns/live_support.hpp"
 #include "loopback_server.hpp"
 #include "netns/run_edsc.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::live_test {
 namespace {

@@ -17,6 +17,7 @@
 #include "cip/encap.hpp"
 #include "loopback_server.hpp"
 #include "netns/run_edsc.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::live_test {
 namespace {

@@ -8,6 +8,7 @@
 #include "edit/analyze.hpp"
 #include "live/plan.hpp"
 #include "netns/live_support.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::live {
 namespace {

@@ -16,6 +16,7 @@
 
 #include "netns/run_edsc.hpp"
 #include "netns/test_network.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::live_test {
 namespace {

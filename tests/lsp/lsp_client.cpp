@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "time_scale.hpp"
+#include "test_paths.hpp"
 
 extern char** environ;
 

@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "lsp/lsp_client.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::lsp_test {
 namespace {

@@ -9,6 +9,7 @@
 #include "corpus_dirs.hpp"
 #include "fuzz/fuzz_bodies.hpp"
 #include "lsp/lsp_client.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::fuzz {
 namespace {

@@ -8,6 +8,7 @@
 
 #include "lsp/lsp_client.hpp"
 #include "time_scale.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::lsp_test {
 namespace {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "lsp/lsp_client.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::lsp_test {
 namespace {

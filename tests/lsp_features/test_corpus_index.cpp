@@ -6,6 +6,7 @@
 #include "lsp/ref_index.hpp"
 #include "lsp_support.hpp"
 #include "model/visit.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::test {
 namespace {

@@ -1,6 +1,7 @@
 // Hover text for each kind of thing under the cursor: the range it covers
 // and the facts it must state (worked out from the sample by hand).
 #include "lsp_support.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::test {
 namespace {
@@ -126,7 +127,7 @@ TEST_F(LspHover, UndefinedAndUnknown) {
 }
 
 TEST(LspHoverFiles, ProjectExample) {
-  auto a = analyze_path(EDSC_PROJECT_DIR "/eds/rightsight-42ef-3byte.eds");
+  auto a = analyze_path(std::string(EDSC_PROJECT_DIR) + "/eds/rightsight-42ef-3byte.eds");
   ASSERT_TRUE(a);
   const auto h = lsp::hover(*a, offset_of(*a, "\"20 04 24 01 30 03\"", 1));
   ASSERT_TRUE(h);

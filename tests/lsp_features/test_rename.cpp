@@ -1,6 +1,7 @@
 // Renumbering entries: the edits applied give the expected text; refusals
 // say why and edit nothing.
 #include "lsp_support.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::test {
 namespace {
@@ -100,7 +101,7 @@ TEST(LspPrepareRename, NamesTheSpan) {
 TEST(LspRenameFiles, CorpusRenameRoundTrips) {
   // Renaming the first parameter of a real file to a free number and back
   // gives the file again, byte for byte.
-  auto a = analyze_path(EDSC_CORPUS_DIR "/AGSweeney__EIP_GROUND_TRUTH__ESP32P4_OPENER.eds");
+  auto a = analyze_path(std::string(EDSC_CORPUS_DIR) + "/AGSweeney__EIP_GROUND_TRUTH__ESP32P4_OPENER.eds");
   ASSERT_TRUE(a);
   const auto at = offset_of(*a, "Param1 =");
   const auto r = lsp::rename(*a, at, "Param900");

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "lsp_support.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::test {
 namespace {
@@ -67,7 +68,7 @@ TEST(LspRobust, HalfTypedAndMalformedText) {
 }
 
 TEST(LspRobust, EveryOffsetOfProjectFiles) {
-  for (const auto& e : std::filesystem::directory_iterator(EDSC_PROJECT_DIR "/eds")) {
+  for (const auto& e : std::filesystem::directory_iterator(std::string(EDSC_PROJECT_DIR) + "/eds")) {
     if (e.path().extension() != ".eds") continue;
     auto a = analyze_path(e.path().string());
     ASSERT_TRUE(a);

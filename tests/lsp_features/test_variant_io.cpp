@@ -2,6 +2,7 @@
 // section's Input1 is its own definition, and the defaults of a section's
 // xxxInfo entries name the entries of that same section.
 #include "lsp_support.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::test {
 namespace {
@@ -143,7 +144,7 @@ TEST_F(LspVariantIo, NoDuplicateReported) {
 // The project's RightSight file: [IO_Info] Input1 (3 bytes) and its 1-byte
 // variant.
 TEST(LspVariantIoFile, RightSight) {
-  auto f = analyze_path(EDSC_PROJECT_DIR "/eds/rightsight-42ef-3byte.eds");
+  auto f = analyze_path(std::string(EDSC_PROJECT_DIR) + "/eds/rightsight-42ef-3byte.eds");
   ASSERT_NE(f, nullptr);
   const auto io = offset_of(*f, "Input1 =", 0, 0);
   const auto variant = offset_of(*f, "Input1 =", 0, 1);

@@ -13,6 +13,7 @@
 #include "golden.hpp"
 #include "emit/emit_json.hpp"
 #include "model_support.hpp"
+#include "test_paths.hpp"
 
 namespace fs = std::filesystem;
 using namespace edsc;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "netns/live_support.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::live_test {
 

@@ -8,6 +8,7 @@
 #include "cli/cli_support.hpp"
 #include "network/layout.hpp"
 #include "network/plan.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::net_test {
 

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "network_support.hpp"
+#include "test_paths.hpp"
 
 using namespace edsc::net_test;
 

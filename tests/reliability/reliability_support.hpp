@@ -10,6 +10,7 @@
 #include <cstdlib>
 
 #include "cli/cli_support.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::reliability_test {
 

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "fuzz/fuzz_bodies.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::fuzz {
 namespace {

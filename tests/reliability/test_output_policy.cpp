@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "reliability/reliability_support.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::reliability_test {
 namespace {

@@ -7,6 +7,7 @@
 
 #include "netns/run_edsc.hpp"
 #include "netns/test_network.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::sim_test {
 

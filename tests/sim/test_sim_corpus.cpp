@@ -16,6 +16,7 @@
 #include "corpus_dirs.hpp"
 #include "sim_network.hpp"
 #include "time_scale.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::sim_test {
 namespace {

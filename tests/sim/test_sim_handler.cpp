@@ -13,6 +13,7 @@
 #include "edit/analyze.hpp"
 #include "netns/live_support.hpp"
 #include "sim/state.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::sim {
 namespace {

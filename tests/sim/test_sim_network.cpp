@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "sim_network.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::sim_test {
 namespace {

@@ -16,6 +16,7 @@
 #include "live/session.hpp"
 #include "netns/live_support.hpp"
 #include "sim_network.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::sim_test {
 namespace {

@@ -20,6 +20,7 @@
 #include "live/socket.hpp"
 #include "netns/live_support.hpp"
 #include "sim_network.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::sim_test {
 namespace {

@@ -9,6 +9,7 @@
 
 #include "netns/test_network.hpp"
 #include "opener_project.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::stack_test {
 

@@ -9,6 +9,7 @@
 
 #include "netns/live_support.hpp"
 #include "netns/run_edsc.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::stack_test {
 

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "device_check.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::stack_test {
 namespace {

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "device_check.hpp"
+#include "test_paths.hpp"
 
 namespace edsc::stack_test {
 namespace {

@@ -6,6 +6,7 @@
 
 #include "diag/catalogue.hpp"
 #include "diag/rules_doc.hpp"
+#include "test_paths.hpp"
 
 namespace {
 

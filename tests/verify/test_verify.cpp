@@ -9,6 +9,7 @@
 #include "check/check_file.hpp"
 #include "synth_log.hpp"
 #include "verify/compare.hpp"
+#include "test_paths.hpp"
 
 using namespace edsc::test;
 
