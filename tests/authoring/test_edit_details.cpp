@@ -55,5 +55,31 @@ TEST_F(EditDetails, FingerprintIgnoresWhereFileAndDeviceAre) {
   EXPECT_NE(fp(file_s + "[Device]\n    MajRev = 2;\n    MinRev = 4;\n" + class_s), tidy);
 }
 
+TEST_F(EditDetails, FingerprintIgnoresLayoutBetweenWideStringPieces) {
+  // A wide string's pieces (L"...") count like plain ones: the blanks, line
+  // end and comment between them are layout, the characters inside are not.
+  const auto fp = [](const std::string& pieces) {
+    return edsc::edit::model_fingerprint("t.eds", "[Device]\n    ProdName = " + pieces + ";\n");
+  };
+  const auto one_line = fp("L\"ab\" L\"cd\"");
+  EXPECT_EQ(fp("L\"ab\"\n        L\"cd\""), one_line);
+  EXPECT_EQ(fp("L\"ab\"   $ first half\n        L\"cd\""), one_line);
+  EXPECT_NE(fp("L\"ab\" L\"ce\""), one_line);
+  // Mixed with a plain piece, and a wide piece holding an escaped quote.
+  EXPECT_EQ(fp("\"ab\"\n        L\"c\\\"d\""), fp("\"ab\" L\"c\\\"d\""));
+  EXPECT_NE(fp("\"ab\" L\"c\\\"d\""), fp("\"ab\" L\"cd\""));
+}
+
+TEST_F(EditDetails, FingerprintOfAWidePieceCutByTheEndOfTheFile) {
+  // The file ends right after `L"`: that piece is still a piece, so the line
+  // end before it is layout as anywhere else. (The dump keeps a string's raw
+  // spelling only when it has an escape, hence the backslash.)
+  const auto fp = [](const std::string& value) {
+    return edsc::edit::model_fingerprint("t.eds", "[Vendor Notes]\n    Note = " + value);
+  };
+  EXPECT_EQ(fp("\"a\\\\b\"\n        L\""), fp("\"a\\\\b\" L\""));
+  EXPECT_NE(fp("\"a\\\\b\"\n        L\""), fp("\"a\\\\c\" L\""));
+}
+
 }  // namespace
 }  // namespace authoring
