@@ -2,6 +2,7 @@
 // responder built on an altered EDS, and logs that are not logs.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <memory>
 
 #include <nlohmann/json.hpp>
@@ -296,6 +297,35 @@ TEST(Verify, DecodeNamesChoicesAndServicesWithoutAttribute) {
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("explicit request          Reset 1/1\n"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("explicit response         Reset ok\n"), std::string::npos) << r.output;
+}
+
+// I/O of up to 8 bytes is one frame and its length is compared; longer data
+// travels fragmented, which is not decoded, so a 9-byte connection's frames
+// are not held to 9 bytes.
+TEST(Verify, IoLengthIsComparedUpToEightBytes) {
+  temp_dir dir("verify-io8");
+  const auto eds = [&](const char* size) {
+    const auto path = dir.path() / (std::string("in") + size + ".eds");
+    write_text(path, altered(read_text(diffuse), "Input1 =\n                1,",
+                             std::string("Input1 =\n                ") + size + ","));
+    return path;
+  };
+  const std::string seven = "(1.0) can0 349#01020304050607\n";  // G1 msg 13 from MAC 9: COS data
+  const auto ds = verify_text(eds("8"), seven);
+  const auto io = std::find_if(ds.begin(), ds.end(),
+                               [](const auto& d) { return edsc::rule_of(d.id).name == std::string("verify-io-length"); });
+  ASSERT_NE(io, ds.end());
+  EXPECT_NE(io->message.find("COS I/O frame from MAC 9 carries 7 bytes where the EDS says 8"), std::string::npos)
+      << io->message;
+  const auto frag = ids(verify_text(eds("9"), "(1.0) can0 349#0102030405060708\n"));
+  EXPECT_EQ(std::count(frag.begin(), frag.end(), "verify-io-length"), 0) << ::testing::PrintToString(frag);
+}
+
+// Findings come in capture order; two at the same line keep the order they
+// were found in: the undecodable frame, then that no slave answers.
+TEST(Verify, FindingsOnOneLineKeepTheirOrder) {
+  const auto ds = verify_text(diffuse, "(1.0) can0 00000349#01\n");
+  EXPECT_EQ(ids(ds), (std::vector<std::string>{"verify-undecodable", "verify-no-node"}));
 }
 
 }  // namespace
