@@ -91,6 +91,24 @@ TEST(OpenerPlan, EachKindIsCountedFromZeroAndHeartbeatInstancesHaveNoData) {
   EXPECT_TRUE(c->plan.consumed_run_idle);
 }
 
+TEST(OpenerPlan, AConnectionWithoutConfigurationNamesInstance0AndPlansNoAssemblyForIt) {
+  // No 0x24 segment and no configuration format: OpENer's configuration
+  // assembly id is 0, which is no instance to create.
+  conn c1{.config_format = "", .path = "\"20 04 2C 64 2C 82\""};
+  const auto c = plan_connections({c1});
+  EXPECT_TRUE(c->diags.empty()) << c->diags[0].message;
+  EXPECT_EQ(assemblies(c->plan), (std::vector<std::string>{"100:16:output", "130:32:input"}));
+  EXPECT_EQ(points(c->plan), (std::vector<std::string>{"owner#0 Connection1 100/130/0 Owner"}));
+}
+
+TEST(OpenerPlan, InstanceNumber1IsAnAssemblyLikeAnyOther) {
+  // Configuration instance 1 (24 01), 10 bytes from Assem120.
+  conn c1{.path = "\"20 04 24 01 2C 64 2C 82\""};
+  const auto c = plan_connections({c1});
+  EXPECT_TRUE(c->diags.empty()) << c->diags[0].message;
+  EXPECT_EQ(assemblies(c->plan), (std::vector<std::string>{"1:10:configuration", "100:16:output", "130:32:input"}));
+}
+
 TEST(OpenerPlan, AHeartbeatInstanceTakesTheSizeALaterConnectionGivesIt) {
   // Connection1 (input only) names O->T instance 100 with no data; Connection2
   // (owner) sends 16 bytes to it: the instance gets 16.
