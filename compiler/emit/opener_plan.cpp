@@ -183,8 +183,8 @@ class planner {
     }
     if (choice.run_idle != run_idle)
       report(diag_id::opener_run_idle, where_of(c, c.params),
-             fmt::format("Connection{}: its {} data {} a run/idle header but Connection{}'s {}", c.number, dir,
-                         run_idle ? "has" : "has no", choice.connection, run_idle ? "has none" : "has one"));
+             fmt::format("Connection{}: its {} data {} run/idle header but Connection{}'s {}", c.number, dir,
+                         run_idle ? "has a" : "has no", choice.connection, run_idle ? "has none" : "has one"));
   }
 
   const model::device& dev_;
