@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <filesystem>
 #include <thread>
 
 #include "cip/device_reply.hpp"
@@ -60,8 +61,9 @@ cip::bytes cip_reply(std::uint8_t service, const cip::bytes& data, std::uint8_t 
   return r;
 }
 
-// One client's requests, answered as OpENer would, but for the frames.
-void fake_device(int s, const std::atomic<bool>& stop) {
+// One client's requests, answered as OpENer would, but for the frames (and,
+// with `one_byte_sizes`, an Assembly size in one byte where it takes two).
+void fake_device(int s, const std::atomic<bool>& stop, bool one_byte_sizes) {
   std::unique_ptr<frame_sender> sender;
   std::uint32_t next_id = 0x22220001;
   for (;;) {
@@ -83,7 +85,7 @@ void fake_device(int s, const std::atomic<bool>& stop) {
     } else if (service == 0x0E && request.size() >= 6) {  // Assembly attribute 4
       const auto instance = request[5];
       const std::uint8_t size = instance == 151 ? 10 : 32;
-      answer = cip_reply(service, {size, 0});
+      answer = cip_reply(service, one_byte_sizes ? cip::bytes{size} : cip::bytes{size, 0});
     } else if (service == 0x54 && request.size() >= data_at + 18) {  // Forward_Open: granted, API 10 ms
       cip::bytes d;
       cip::put_u32(d, next_id + 0x100);
@@ -107,7 +109,7 @@ void fake_device(int s, const std::atomic<bool>& stop) {
 }
 
 TEST(live_fake_device, wrong_frames_are_found_at_the_connection) {
-  loopback_server device(fake_device);
+  loopback_server device([](int s, const std::atomic<bool>& stop) { fake_device(s, stop, false); });
   const auto eds = std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds";
   const auto r = run_edsc("verify --live " + device.address() + " " + quoted(eds) + " --connections --color never");
   EXPECT_EQ(r.status, 1) << r.output;
@@ -117,9 +119,23 @@ TEST(live_fake_device, wrong_frames_are_found_at_the_connection) {
   EXPECT_NE(r.output.find("ms granted [live-io-rate]"), std::string::npos) << r.output;
 }
 
+// A size in one byte is no size: verify --live says so in words instead of
+// reading a byte past the reply, and checks nothing of that assembly.
+TEST(live_fake_device, verify_takes_an_assembly_size_of_one_byte_for_no_size) {
+  loopback_server device([](int s, const std::atomic<bool>& stop) { fake_device(s, stop, true); });
+  const auto eds = std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds";
+  const auto r = run_edsc("verify --live " + device.address() + " " + quoted(eds) + " --color never");
+  EXPECT_NE(r.output.find("Assem151: the device does not give the size of assembly instance 151 (a reply without "
+                          "the size)"),
+            std::string::npos)
+      << r.output;
+}
+
 // Answers what `edsc probe` asks: OpENer's identity, ListServices, an
 // Assembly Max Instance of 2, and attribute 4 (size) of instance 1 in one
-// byte where a size takes two; instance 2 answers 32 bytes properly.
+// byte where a size takes two; instance 2 answers 32 bytes properly. Its File
+// object announces 4 bytes, but Upload_Transfer answers only the transfer
+// number, without the packet type and data that follow it.
 void short_size_device(int s, const std::atomic<bool>& stop) {
   for (;;) {
     const auto req = read_message(s, stop);
@@ -141,6 +157,10 @@ void short_size_device(int s, const std::atomic<bool>& stop) {
       if (instance == 0 && attribute == 2) answer = cip_reply(service, {2, 0});
       else if (instance == 1) answer = cip_reply(service, {0x20});
       else answer = cip_reply(service, {0x20, 0});
+    } else if (service == 0x4B) {  // Initiate_Upload: a file of 4 bytes, transfers of up to 255
+      answer = cip_reply(service, {4, 0, 0, 0, 0xFF});
+    } else if (service == 0x4F) {  // Upload_Transfer: the transfer number alone
+      answer = cip_reply(service, {request.back()});
     } else {
       answer = cip_reply(service, {}, 0x08);
     }
@@ -154,6 +174,20 @@ TEST(live_fake_device, probe_skips_an_assembly_size_of_one_byte) {
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("      2: 32\n"), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("      1: "), std::string::npos) << r.output;
+}
+
+// An Upload_Transfer reply of one byte has no packet type: the upload stops
+// at it in words (exit 2) instead of reading the type past the reply.
+TEST(live_fake_device, an_upload_transfer_of_one_byte_is_no_packet) {
+  loopback_server device(short_size_device);
+  const auto out = (std::filesystem::temp_directory_path() / "edsc-one-byte-upload.eds").string();
+  std::filesystem::remove(out);
+  const auto r = run_edsc("probe " + device.address() + " --timeout 2 --upload-eds " + quoted(out));
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("upload of the EDS from the device: Upload_Transfer 0 answered another transfer"),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
 }
 
 }  // namespace
