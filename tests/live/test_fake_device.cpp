@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <thread>
 
+#include <fmt/format.h>
+
 #include "cip/device_reply.hpp"
 #include "cip/encap.hpp"
 #include "cip/io_frame.hpp"
@@ -144,17 +146,22 @@ TEST(live_fake_device, verify_takes_an_assembly_size_of_one_byte_for_no_size) {
 }
 
 // A refusal for the configuration (extended status 0x0129) is told with
-// the configuration's size and instance (Assem151: 10 bytes, instance 151).
-TEST(live_fake_device, a_refused_configuration_is_named_with_its_size) {
-  loopback_server device([](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {.open_refused = 0x0129}); });
+// the configuration's size and instance (Assem151: 10 bytes, instance 151);
+// one for a path (0x012A) with the instances of Connection1's path
+// (20 04 24 97 2C 96 2C 64).
+TEST(live_fake_device, a_refusal_is_told_with_the_eds_values_it_concerns) {
   const auto eds = std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds";
-  const auto r = run_edsc("verify --live " + device.address() + " " + quoted(eds) + " --connections --color never");
-  EXPECT_EQ(r.status, 1) << r.output;
-  EXPECT_NE(r.output.find("Connection1 refused: 0x01"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("0x0129"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find(": refused the 10 bytes of configuration the EDS gives instance 151 [live-connection-refused]"),
-            std::string::npos)
-      << r.output;
+  for (const auto& [ext, words] :
+       {std::pair<std::uint16_t, const char*>{0x0129, "refused the 10 bytes of configuration the EDS gives instance 151"},
+        {0x012A, "the path names O->T instance 150, T->O instance 100, configuration instance 151"}}) {
+    SCOPED_TRACE(ext);
+    loopback_server device([ext](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {.open_refused = ext}); });
+    const auto r = run_edsc("verify --live " + device.address() + " " + quoted(eds) + " --connections --color never");
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("Connection1 refused: 0x01"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(fmt::format("0x{:04X}", ext)), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(fmt::format(": {} [live-connection-refused]", words)), std::string::npos) << r.output;
+  }
 }
 
 // A Forward_Close refused after the frames is said at the connection.
