@@ -1,5 +1,7 @@
 // DeviceNet I/O: [IO_Info] per connection type and per data set, and
 // [Variant_IO_Info], the alternative sizes a configuration tool offers.
+#include <array>
+
 #include <fmt/format.h>
 
 #include "cst/cst.hpp"
@@ -13,7 +15,10 @@ namespace {
 using model::io_data;
 using model::io_info;
 
-constexpr const char* type_names[] = {"Poll", "Strobe", "COS", "Cyclic"};
+// The connection types by their bit of a mask. Bit 4 (multicast poll, not
+// confirmed) and the reserved bits above it are not named; `at` makes a
+// loop that reads past bit 3 fail instead of reading past the array.
+constexpr auto type_names = std::to_array<const char*>({"Poll", "Strobe", "COS", "Cyclic"});
 
 std::optional<std::uint64_t> size_of(const io_data& d) {
   if (!d.size.is_integer() || d.size.negative) return std::nullopt;
@@ -74,7 +79,7 @@ std::uint64_t mask_of(const value& v) { return v.is_integer() ? v.as_uint() : 0;
 std::string type_list(std::uint64_t mask) {
   std::string s;
   for (unsigned t = 0; t < 4; ++t)
-    if ((mask >> t) & 1u) s += (s.empty() ? "" : ", ") + std::string(type_names[t]);
+    if ((mask >> t) & 1u) s += (s.empty() ? "" : ", ") + std::string(type_names.at(t));
   return s.empty() ? "none" : s;
 }
 

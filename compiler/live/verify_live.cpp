@@ -231,11 +231,7 @@ struct checker {
            fmt::format("{}: {} of {} T->O frames lack the run/idle header the T->O format (4) asks for", name,
                        st.without_header, st.frames));
     }
-    // Generous: only a device far slower than it promised is worth a word.
-    if (st.frames >= 3 && o.granted.to_api_us > 0 && st.mean_interval_us > 2.0 * o.granted.to_api_us)
-      diag(diag_id::live_io_rate, to_site,
-           fmt::format("{}: T->O frames every {:.1f} ms on average, {:.1f} ms granted", name,
-                       st.mean_interval_us / 1000, o.granted.to_api_us / 1000.0));
+    if (auto slow = io_rate_warning(name, st, o.granted.to_api_us)) diag(diag_id::live_io_rate, to_site, *slow);
     if (!o.close_problem.empty())
       diag(diag_id::live_not_checked, c.from.where, fmt::format("{}: {}", name, o.close_problem));
     row(name, sizes,
@@ -247,6 +243,14 @@ struct checker {
 };
 
 }  // namespace
+
+std::optional<std::string> io_rate_warning(std::string_view name, const io_stats& st, std::uint32_t to_api_us) {
+  // Generous: only a device far slower than it promised is worth a word.
+  if (st.frames >= 3 && to_api_us > 0 && st.mean_interval_us > 2.0 * to_api_us)
+    return fmt::format("{}: T->O frames every {:.1f} ms on average, {:.1f} ms granted", name,
+                       st.mean_interval_us / 1000, to_api_us / 1000.0);
+  return std::nullopt;
+}
 
 std::string_view to_string(verdict v) {
   switch (v) {

@@ -3,8 +3,10 @@
 // Findings are diagnostics located at the EDS field that disagrees; each
 // check also gets a row of the summary table.
 #include <chrono>
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "diag/diagnostic.hpp"
@@ -35,6 +37,13 @@ struct live_report {
 };
 
 [[nodiscard]] live_report verify_live(const endpoint& device, const model::device& dev, const live_options& opt);
+
+// The live-io-rate finding for a connection's T->O frames (`st`, measured by
+// exercise_connection) against the API the device granted: none unless at
+// least 3 frames came and their mean interval is over twice that API.
+struct io_stats;
+[[nodiscard]] std::optional<std::string> io_rate_warning(std::string_view name, const io_stats& st,
+                                                         std::uint32_t to_api_us);
 
 // The summary table: check, EDS, device, result.
 [[nodiscard]] std::string render_rows(const std::vector<check_row>& rows);

@@ -2,7 +2,8 @@
 // for a configured network, by section (compiler/diff/diff_entries.cpp), and
 // the DeviceNet masks and connection names: cases the mutation run of
 // compiler/diff (docs/testing.md) found no test for, each verdict worked out
-// from the section's meaning.
+// from the section's meaning. At the end, the I/O size and mask texts and the
+// text output's wrapping where the expectation had no test.
 #include "diff_support.hpp"
 
 using namespace diff_test;
@@ -219,6 +220,62 @@ TEST(DiffEntries, UnreadableTriggerWithdrawsNoBit) {
   ASSERT_NE(d, nullptr) << c.dump();
   EXPECT_EQ(d->level, impact::breaking);
   EXPECT_NE(d->consequence.find("withdrawn (bits 0x0)"), std::string::npos) << d->consequence;
+}
+
+
+// Bit 4 of a DeviceNet mask (multicast poll, unconfirmed) and the reserved
+// bits above it name no connection type: Input1 of the RightSight gaining bit
+// 4 (0x0006 -> 0x0016) loses no bit (0x0006 & ~0x0016 == 0), so it is
+// additive, and both lists name bits 1 and 2 only.
+TEST(DiffEntries, MaskBitsPastCyclicAreNotNamed) {
+  const auto old_text = project_file("eds/rightsight-42ef-diffuse.eds");
+  const auto c = compare(old_text, replaced(old_text, "0x0006,                         $ strobe and change of state",
+                                            "0x0016,"));
+  ASSERT_EQ(c.kinds(), std::vector<std::string>{"io-connection-mask"}) << c.dump();
+  const auto& d = c.r.differences[0];
+  EXPECT_EQ(d.level, impact::additive);
+  EXPECT_EQ(d.message, "usable with Strobe, COS -> Strobe, COS");
+  EXPECT_EQ(d.consequence, "more connection types may carry it; existing ones still do");
+}
+
+// A data set's size becomes unreadable (-1 is no size): the message and the
+// consequence say "an unknown number of bytes", and with one of the two sizes
+// unknown there is no "by N bytes" for the nodes mapped after it. Strobe and
+// COS name Input1 as their default input; the identity is unchanged.
+TEST(DiffEntries, SizeChangeFromOrToAnUnknownSizeMovesByNoCount) {
+  const auto known = project_file("eds/rightsight-42ef-diffuse.eds");
+  const auto unknown = replaced(known, "        1,                              $ size in bytes",
+                                "        -1,                             $ size in bytes");
+  const std::string by_default = "Strobe and COS connections carry it by default. ";
+  const std::string edited =
+      ": it reports a size mismatch for the node and exchanges no I/O with it until its scanlist is edited; once "
+      "edited, the node takes ";
+  const std::string unchanged = " Keying cannot catch it: the identity is unchanged.";
+  auto c = compare(known, unknown);
+  auto* d = c.find("io-size");
+  ASSERT_NE(d, nullptr) << c.dump();
+  EXPECT_EQ(d->message, "1 byte -> an unknown number of bytes");
+  EXPECT_EQ(d->consequence, by_default + "A scanner configured for 1 byte from this node receives an unknown number "
+                                         "of bytes" + edited + "an unknown number of bytes of the scanner's input "
+                                         "image, so every node mapped after it moves." + unchanged);
+  c = compare(unknown, known);
+  d = c.find("io-size");
+  ASSERT_NE(d, nullptr) << c.dump();
+  EXPECT_EQ(d->message, "an unknown number of bytes -> 1 byte");
+  EXPECT_EQ(d->consequence, by_default + "A scanner configured for an unknown number of bytes from this node "
+                                         "receives 1 byte" + edited + "1 byte of the scanner's input image, so every "
+                                         "node mapped after it moves." + unchanged);
+}
+
+// The text output wraps a consequence at its blanks: a blank at its end
+// starts no word, so the "  = " line ends with the last word.
+TEST(DiffEntries, ConsequenceEndingInABlankIsPrintedWithout) {
+  auto c = compare(base, replaced(base, "DescText = \"diff test device\";", "DescText = \"other\";"));
+  ASSERT_EQ(c.r.differences.size(), 1u) << c.dump();
+  c.r.differences[0].consequence = "documentation only ";
+  const auto text = c.dump();
+  EXPECT_NE(text.find("\n  = documentation only\n"), std::string::npos) << text;
+  EXPECT_EQ(text.find(" \n"), std::string::npos) << text;
 }
 
 }  // namespace

@@ -6,7 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <filesystem>
 #include <thread>
+
+#include <fmt/format.h>
 
 #include "cip/device_reply.hpp"
 #include "cip/encap.hpp"
@@ -61,8 +64,15 @@ cip::bytes cip_reply(std::uint8_t service, const cip::bytes& data, std::uint8_t 
   return r;
 }
 
-// One client's requests, answered as OpENer would, but for the frames.
-void fake_device(int s, const std::atomic<bool>& stop) {
+// How the stand-in departs from OpENer besides its frames.
+struct quirks {
+  bool one_byte_sizes = false;       // an Assembly size in one byte where it takes two
+  std::uint16_t open_refused = 0;    // Forward_Open refused: 0x01 with this extended status
+  bool close_refused = false;        // Forward_Close refused: 0x01
+};
+
+// One client's requests, answered as OpENer would, but for the frames and `q`.
+void fake_device(int s, const std::atomic<bool>& stop, quirks q) {
   std::unique_ptr<frame_sender> sender;
   std::uint32_t next_id = 0x22220001;
   for (;;) {
@@ -84,7 +94,10 @@ void fake_device(int s, const std::atomic<bool>& stop) {
     } else if (service == 0x0E && request.size() >= 6) {  // Assembly attribute 4
       const auto instance = request[5];
       const std::uint8_t size = instance == 151 ? 10 : 32;
-      answer = cip_reply(service, {size, 0});
+      answer = cip_reply(service, q.one_byte_sizes ? cip::bytes{size} : cip::bytes{size, 0});
+    } else if (service == 0x54 && q.open_refused != 0) {
+      answer = {static_cast<std::uint8_t>(service | 0x80), 0, 0x01, 1};
+      cip::put_u16(answer, q.open_refused);
     } else if (service == 0x54 && request.size() >= data_at + 18) {  // Forward_Open: granted, API 10 ms
       cip::bytes d;
       cip::put_u32(d, next_id + 0x100);
@@ -95,6 +108,9 @@ void fake_device(int s, const std::atomic<bool>& stop) {
       cip::put_u16(d, 0);
       sender = std::make_unique<frame_sender>(next_id++);
       answer = cip_reply(service, d);
+    } else if (service == 0x4E && q.close_refused) {
+      sender.reset();
+      answer = cip_reply(service, {}, 0x01);
     } else if (service == 0x4E && request.size() >= data_at + 10) {  // Forward_Close
       sender.reset();
       cip::bytes d(request.begin() + static_cast<long>(data_at) + 2, request.begin() + static_cast<long>(data_at) + 10);
@@ -108,7 +124,7 @@ void fake_device(int s, const std::atomic<bool>& stop) {
 }
 
 TEST(live_fake_device, wrong_frames_are_found_at_the_connection) {
-  loopback_server device(fake_device);
+  loopback_server device([](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {}); });
   const auto eds = std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds";
   const auto r = run_edsc("verify --live " + device.address() + " " + quoted(eds) + " --connections --color never");
   EXPECT_EQ(r.status, 1) << r.output;
@@ -118,10 +134,59 @@ TEST(live_fake_device, wrong_frames_are_found_at_the_connection) {
   EXPECT_NE(r.output.find("ms granted [live-io-rate]"), std::string::npos) << r.output;
 }
 
-// Answers what `edsc probe` asks: OpENer's identity, ListServices, an
-// Assembly Max Instance of 2, and attribute 4 (size) of instance 1 in one
-// byte where a size takes two; instance 2 answers 32 bytes properly.
-void short_size_device(int s, const std::atomic<bool>& stop) {
+// A size in one byte is no size: verify --live says so in words instead of
+// reading a byte past the reply, and checks nothing of that assembly.
+TEST(live_fake_device, verify_takes_an_assembly_size_of_one_byte_for_no_size) {
+  loopback_server device([](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {.one_byte_sizes = true}); });
+  const auto eds = std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds";
+  const auto r = run_edsc("verify --live " + device.address() + " " + quoted(eds) + " --color never");
+  EXPECT_NE(r.output.find("Assem151: the device does not give the size of assembly instance 151 (a reply without "
+                          "the size)"),
+            std::string::npos)
+      << r.output;
+}
+
+// A refusal for the configuration (extended status 0x0129) is told with
+// the configuration's size and instance (Assem151: 10 bytes, instance 151);
+// one for a path (0x012A) with the instances of Connection1's path
+// (20 04 24 97 2C 96 2C 64).
+TEST(live_fake_device, a_refusal_is_told_with_the_eds_values_it_concerns) {
+  const auto eds = std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds";
+  for (const auto& [ext, words] :
+       {std::pair<std::uint16_t, const char*>{0x0129, "refused the 10 bytes of configuration the EDS gives instance 151"},
+        {0x012A, "the path names O->T instance 150, T->O instance 100, configuration instance 151"}}) {
+    SCOPED_TRACE(ext);
+    loopback_server device([ext](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {.open_refused = ext}); });
+    const auto r = run_edsc("verify --live " + device.address() + " " + quoted(eds) + " --connections --color never");
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("Connection1 refused: 0x01"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(fmt::format("0x{:04X}", ext)), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(fmt::format(": {} [live-connection-refused]", words)), std::string::npos) << r.output;
+  }
+}
+
+// A Forward_Close refused after the frames is said at the connection.
+TEST(live_fake_device, a_refused_forward_close_is_said) {
+  loopback_server device([](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {.close_refused = true}); });
+  const auto eds = std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds";
+  const auto r = run_edsc("verify --live " + device.address() + " " + quoted(eds) + " --connections --color never");
+  EXPECT_NE(r.output.find("Connection1: Forward_Close refused: 0x01"), std::string::npos) << r.output;
+}
+
+// What `edsc probe` asks, answered: OpENer's identity, ListServices, the
+// Assembly class's Max Instance (2 unless `max_instance` says otherwise) and
+// attribute 4 (size) of instance 1 in one byte where a size takes two, the
+// other instances 32 bytes. Its File object announces 4 bytes; with
+// `typed_transfers` Upload_Transfer 0 is a first packet of 2 bytes and every
+// later one has the packet type 5 (none), else each answer is the transfer
+// number alone. `hang_up_at` closes the session at that instance's size.
+struct probe_quirks {
+  std::uint16_t max_instance = 2;
+  std::uint8_t hang_up_at = 0;
+  bool typed_transfers = false;
+};
+
+void probe_device(int s, const std::atomic<bool>& stop, probe_quirks q) {
   for (;;) {
     const auto req = read_message(s, stop);
     if (req.size() < cip::encap_header_size) return;
@@ -139,9 +204,16 @@ void short_size_device(int s, const std::atomic<bool>& stop) {
       answer = cip_reply(service, unhex("01 00 0C 00 E9 FD 02 03 30 00 15 CD 5B 07 09 4F 70 45 4E 65 72 20 50 43"));
     } else if (service == 0x0E && request.size() >= 8) {  // path 20 04 24 <instance> 30 <attribute>
       const auto instance = request[5], attribute = request[7];
-      if (instance == 0 && attribute == 2) answer = cip_reply(service, {2, 0});
+      if (instance == q.hang_up_at && attribute == 4) return;
+      if (instance == 0 && attribute == 2)
+        answer = cip_reply(service, {static_cast<std::uint8_t>(q.max_instance), static_cast<std::uint8_t>(q.max_instance >> 8)});
       else if (instance == 1) answer = cip_reply(service, {0x20});
       else answer = cip_reply(service, {0x20, 0});
+    } else if (service == 0x4B) {  // Initiate_Upload: a file of 4 bytes, transfers of up to 255
+      answer = cip_reply(service, {4, 0, 0, 0, 0xFF});
+    } else if (service == 0x4F) {  // Upload_Transfer
+      const auto n = request.back();
+      answer = !q.typed_transfers ? cip_reply(service, {n}) : cip_reply(service, {n, n == 0 ? std::uint8_t{0} : std::uint8_t{5}, 'E', 'D'});
     } else {
       answer = cip_reply(service, {}, 0x08);
     }
@@ -150,11 +222,60 @@ void short_size_device(int s, const std::atomic<bool>& stop) {
 }
 
 TEST(live_fake_device, probe_skips_an_assembly_size_of_one_byte) {
-  loopback_server device(short_size_device);
+  loopback_server device([](int s, const std::atomic<bool>& stop) { probe_device(s, stop, {}); });
   const auto r = run_edsc("probe " + device.address() + " --timeout 2");
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("      2: 32\n"), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("      1: "), std::string::npos) << r.output;
+}
+
+// Max Instance 513 (01 02: 0x0201) is more than the 512 instances a probe reads.
+TEST(live_fake_device, probe_reads_max_instance_in_two_bytes) {
+  loopback_server device([](int s, const std::atomic<bool>& stop) { probe_device(s, stop, {.max_instance = 513}); });
+  const auto r = run_edsc("probe " + device.address() + " --timeout 2");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("(only instances 1-512 of 513 read)"), std::string::npos) << r.output;
+}
+
+// The device hangs up while its assembly sizes are read: the probe ends
+// there with the network failure in words (exit 2), the reply it waited for.
+TEST(live_fake_device, probe_stops_where_the_device_hangs_up) {
+  loopback_server device([](int s, const std::atomic<bool>& stop) { probe_device(s, stop, {.hang_up_at = 2}); });
+  const auto r = run_edsc("probe " + device.address() + " --timeout 2");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find(": the device closed the connection instead of sending SendRRData reply header\n"),
+            std::string::npos)
+      << r.output;
+}
+
+// `edsc probe --upload-eds` from probe_device(q), which leaves no file
+// behind: the upload fails in these tests.
+auto refused_upload(probe_quirks q) {
+  loopback_server device([q](int s, const std::atomic<bool>& stop) { probe_device(s, stop, q); });
+  const auto out = (std::filesystem::temp_directory_path() / "edsc-refused-upload.eds").string();
+  std::filesystem::remove(out);
+  auto r = run_edsc("probe " + device.address() + " --timeout 2 --upload-eds " + quoted(out));
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  return r;
+}
+
+// Packet type 5 is none of first (0), middle (1), last (2), first and last
+// (4): the upload stops at transfer 1, the first that has it.
+TEST(live_fake_device, an_upload_packet_of_type_5_is_out_of_turn) {
+  const auto r = refused_upload({.typed_transfers = true});
+  EXPECT_NE(r.output.find("upload of the EDS from the device: Upload_Transfer 1: packet type 5 out of turn"),
+            std::string::npos)
+      << r.output;
+}
+
+// An Upload_Transfer reply of one byte has no packet type: the upload stops
+// at it in words (exit 2) instead of reading the type past the reply.
+TEST(live_fake_device, an_upload_transfer_of_one_byte_is_no_packet) {
+  const auto r = refused_upload({});
+  EXPECT_NE(r.output.find("upload of the EDS from the device: Upload_Transfer 0 answered another transfer"),
+            std::string::npos)
+      << r.output;
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // The Forward_Open paths a scanner builds from the EDS (compiler/live/plan),
-// in the width the EDS wrote each segment, against bytes worked out by hand.
+// in the width the EDS wrote each segment, and the transport byte, against
+// bytes worked out by hand.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -15,22 +16,49 @@ namespace {
 
 using live_test::hex;
 
-TEST(live_plan, a_16_bit_instance_segment_keeps_its_width) {
-  // OpENer's sample EDS with Connection1's configuration instance 0x97
-  // written as a 16-bit segment: 25 (instance, 16-bit), pad 00, 97 00.
+// OpENer's sample EDS with `from` replaced by `to` (which must be in it),
+// planned.
+std::vector<connection_plan> plans_with(const std::string& from, const std::string& to) {
   const std::string eds = std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds";
   std::ifstream in(eds);
   std::stringstream text;
   text << in.rdbuf();
   std::string s = text.str();
-  const std::string path8 = "\"20 04 24 97 2C 96 2C 64\";";
-  const auto at = s.find(path8);
-  ASSERT_NE(at, std::string::npos);
-  s.replace(at, path8.size(), "\"20 04 25 00 97 00 2C 96 2C 64\";");
+  const auto at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) s.replace(at, from.size(), to);
   const auto a = edit::analyze(eds, s);
-  const auto plans = plan_connections(a->dev);
+  return plan_connections(a->dev);
+}
+
+const std::string path8 = "\"20 04 24 97 2C 96 2C 64\";";
+
+TEST(live_plan, a_16_bit_instance_segment_keeps_its_width) {
+  // Connection1's configuration instance 0x97 written as a 16-bit segment:
+  // 25 (instance, 16-bit), pad 00, 97 00.
+  const auto plans = plans_with(path8, "\"20 04 25 00 97 00 2C 96 2C 64\";");
   ASSERT_FALSE(plans.empty());
   EXPECT_EQ(hex(plans.front().app_path), "20 04 25 00 97 00 2C 96 2C 64");
+}
+
+TEST(live_plan, a_32_bit_instance_segment_keeps_its_width) {
+  // The same instance as a 32-bit segment, though it fits in 8 or 16 bits:
+  // 26 (instance, 32-bit), pad 00, 97 00 00 00.
+  const auto plans = plans_with(path8, "\"20 04 26 00 97 00 00 00 2C 96 2C 64\";");
+  ASSERT_FALSE(plans.empty());
+  EXPECT_EQ(hex(plans.front().app_path), "20 04 26 00 97 00 00 00 2C 96 2C 64");
+}
+
+TEST(live_plan, the_trigger_is_bits_4_to_6_of_the_transport_byte) {
+  // Connection1 is cyclic (bit 16 of its trigger and transport field); change
+  // of state is bit 17, application bit 18. Class 1 is the low nibble: the
+  // Forward_Open's transport byte is 0x01, 0x11, 0x21.
+  for (const auto& [field, transport] : {std::pair{"0x84010002,", 0x01}, {"0x84020002,", 0x11}, {"0x84040002,", 0x21}}) {
+    SCOPED_TRACE(field);
+    const auto plans = plans_with("0x84010002,", field);
+    ASSERT_FALSE(plans.empty());
+    EXPECT_EQ(plans.front().request.transport, transport);
+  }
 }
 
 }  // namespace
