@@ -285,5 +285,74 @@ TEST(cip_message, electronic_key_segment_decodes_and_only_format_4) {
   EXPECT_EQ(bad.error().offset, 10u);
 }
 
+// Even lengths need no pad byte: 4 bytes are 2 words, none is 0 words.
+TEST(cip_connection_manager, data_segment_of_an_even_length_is_not_padded) {
+  bytes four;
+  put_data_segment(four, unhex("AA BB CC DD"));
+  EXPECT_EQ(hex(four), "80 02 AA BB CC DD");
+  bytes none;
+  put_data_segment(none, {});
+  EXPECT_EQ(hex(none), "80 00");
+}
+
+// The device's ListIdentity item is the one the client test decodes, byte
+// for byte: the socket address's last 8 bytes are zeros.
+TEST(cip_encap, list_identity_reply_as_a_device_sends_it) {
+  identity id;
+  id.sin_family = 2;  // AF_INET
+  id.sin_port = 44818;
+  id.sin_addr = {198, 51, 100, 2};
+  id.vendor = 1;
+  id.device_type = 12;
+  id.product_code = 65001;
+  id.major = 2;
+  id.minor = 3;
+  id.status = 0x0030;
+  id.serial = 123456789;
+  id.product_name = "OpENer PC";
+  id.state = 3;
+  EXPECT_EQ(hex(list_identity_reply(id)), hex(unhex(list_identity_reply_data)));
+}
+
+// Items of other types in a ListServices reply are skipped, not read as
+// services: a 2-byte item 0x000C, then the Communications service.
+TEST(cip_encap, list_services_reply_skips_other_items) {
+  const auto data = unhex("02 00 0C 00 02 00 AA BB "
+                          "00 01 14 00 01 00 20 01 43 6F 6D 6D 75 6E 69 63 61 74 69 6F 6E 73 00 00");
+  auto s = decode_list_services(data, 24);
+  ASSERT_TRUE(s.ok()) << s.error().what;
+  ASSERT_EQ(s->size(), 1u);
+  EXPECT_EQ(s->front().name, "Communications");
+}
+
+// A class 1 frame is a sequenced address item (0x8002) and then a connected
+// data item (0x00B1): either one of another type is not one.
+TEST(cip_io, class1_frame_needs_both_item_types) {
+  const std::string address = "02 80 08 00 DD CC BB AA 05 00 00 00 ";
+  const std::string data = "08 00 06 00 01 00 00 00 10 20";
+  EXPECT_TRUE(decode_io_frame(unhex("02 00 " + address + "B1 00 " + data), true).ok());
+  EXPECT_FALSE(decode_io_frame(unhex("02 00 " + address + "B2 00 " + data), true).ok());
+  EXPECT_FALSE(decode_io_frame(unhex("02 00 A1 00 04 00 DD CC BB AA B1 00 " + data), true).ok());
+}
+
+// 16-bit network parameters: 38 bytes | variable 1 << 9 | point-to-point
+// 2 << 13 = 0x26 + 0x200 + 0x4000 = 0x4226, both ways; with the redundant
+// owner bit (1 << 15) 0xC226.
+TEST(cip_connection_manager, params16_variable_size_and_owner_both_ways) {
+  EXPECT_EQ(encode_params16({38, true, conn_priority::low, conn_type::point_to_point, false}), 0x4226);
+  const auto p = decode_params16(0x4226);
+  EXPECT_EQ(p.size, 38);
+  EXPECT_TRUE(p.variable);
+  EXPECT_EQ(p.priority, conn_priority::low);
+  EXPECT_EQ(p.type, conn_type::point_to_point);
+  EXPECT_FALSE(p.redundant_owner);
+  EXPECT_FALSE(decode_params16(0x4026).variable);
+  EXPECT_EQ(encode_params16({38, true, conn_priority::low, conn_type::point_to_point, true}), 0xC226);
+  const auto owned = decode_params16(0xC226);
+  EXPECT_TRUE(owned.redundant_owner);
+  EXPECT_EQ(owned.size, 38);
+  EXPECT_EQ(owned.type, conn_type::point_to_point);
+}
+
 }  // namespace
 }  // namespace edsc::cip
