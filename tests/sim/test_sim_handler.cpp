@@ -270,5 +270,52 @@ TEST_F(sim_handler, class_3_connections_carry_explicit_requests) {
   EXPECT_EQ(hex(u->cip), "8E 00 00 00 01 00");
 }
 
+// A class 3 connection's timeout is its multiplier times its O->T RPI, the
+// RPI taken as at least 1 ms: 500 us at multiplier 0 (x4) is 4 ms, not 2.
+TEST_F(sim_handler, a_class_3_timeout_counts_at_least_a_millisecond) {
+  auto fo = live_test::opener_connection1_request();
+  fo.transport = 0xA3;
+  fo.path = unhex("20 02 24 01");
+  fo.ot = fo.to = {504, true, cip::conn_priority::low, cip::conn_type::point_to_point, false};
+  fo.timeout_multiplier = 0;
+  fo.ot_rpi_us = fo.to_rpi_us = 500;
+  ASSERT_EQ(forward_open(fo).general, 0);
+  ASSERT_EQ(s_.connections.size(), 1u);
+  EXPECT_EQ(s_.connections[0].timeout, 4ms);
+  EXPECT_EQ(s_.connections[0].expires, now_ + 4ms);
+}
+
+// Only input assemblies count up, and only while nothing fixed their data:
+// the output (150) keeps what it holds, and an input set by --inputs or a
+// control line keeps its bytes in every frame.
+TEST_F(sim_handler, the_counter_pattern_moves_only_unfixed_inputs) {
+  ASSERT_EQ(forward_open(live_test::opener_connection1_request()).general, 0);
+  cip::bytes fixed(32);
+  for (std::size_t i = 0; i < fixed.size(); ++i) fixed[i] = static_cast<std::uint8_t>(0xA0 + i);
+  s_.dev.assembly(100)->data = fixed;
+  s_.dev.assembly(100)->fixed = true;
+  for (const auto at : {now_, now_ + 30ms, now_ + 60ms}) {
+    const auto frames = produce_io(s_, at);
+    ASSERT_EQ(frames.size(), 1u);
+    const auto f = cip::decode_io_frame(frames[0].frame, false);
+    ASSERT_TRUE(f.ok());
+    EXPECT_EQ(f->data, fixed);
+  }
+  EXPECT_EQ(s_.dev.assembly(150)->data, cip::bytes(32, 0));
+  EXPECT_EQ(s_.dev.assembly(151)->data, cip::bytes(10, 0));
+}
+
+// Class attributes: Identity has revision 1 and one instance (attributes 1
+// and 2, nothing else); the Assembly class's maximum instance is the
+// largest instance served: in OpENer's EDS not Assem151 but 153 (0x99), the
+// listen-only heartbeat point that Connection3's path "... 2C 99 ..." names.
+TEST_F(sim_handler, class_attributes_of_identity_and_assembly) {
+  EXPECT_EQ(hex(ask(cip::encode_request(0x0E, cip::logical_path(1, 0, 1))).data), "01 00");
+  EXPECT_EQ(hex(ask(cip::encode_request(0x0E, cip::logical_path(1, 0, 2))).data), "01 00");
+  EXPECT_EQ(ask(cip::encode_request(0x0E, cip::logical_path(1, 0, 3))).general, 0x14);
+  EXPECT_EQ(hex(ask(cip::encode_request(0x0E, cip::logical_path(4, 0, 1))).data), "02 00");
+  EXPECT_EQ(hex(ask(cip::encode_request(0x0E, cip::logical_path(4, 0, 2))).data), "99 00");
+}
+
 }  // namespace
 }  // namespace edsc::sim

@@ -150,6 +150,24 @@ TEST_F(sim_inputs, control_lines_are_answered_by_a_json_line_all_or_nothing) {
   EXPECT_NE(control(s_, "set 100 00 Speed=1").find("not both"), std::string::npos);
 }
 
+// Numbers on a control line: decimal, hex with a sign, reals; hex that does
+// not end where the word ends or does not fit 63 bits is no number.
+TEST(sim_inputs_numbers, hex_takes_a_sign_and_must_be_whole) {
+  const auto n = [](std::string_view text) { return parse_number(text); };
+  ASSERT_TRUE(n("-0x10"));
+  EXPECT_FALSE(n("-0x10")->is_real);
+  EXPECT_EQ(n("-0x10")->integer, -16);
+  ASSERT_TRUE(n("0x7FFFFFFFFFFFFFFF"));
+  EXPECT_EQ(n("0x7FFFFFFFFFFFFFFF")->integer, INT64_MAX);
+  EXPECT_FALSE(n("0x8000000000000000"));
+  EXPECT_FALSE(n("0x1G"));
+  EXPECT_FALSE(n("0x"));
+  ASSERT_TRUE(n("-12"));
+  EXPECT_EQ(n("-12")->integer, -12);
+  ASSERT_TRUE(n("1.5"));
+  EXPECT_TRUE(n("1.5")->is_real);
+}
+
 // The command refuses a file that does not fit before it opens a socket:
 // exit status 2 and a diagnostic of the project's renderer (place, severity,
 // rule id, the line and a caret).

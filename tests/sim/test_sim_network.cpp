@@ -53,6 +53,14 @@ TEST_F(sim_device, openers_eds_passes_verify_live_with_every_connection_opened) 
   EXPECT_NE(out.find("{\"event\":\"stopped\""), std::string::npos) << out;
 }
 
+// Stopped before anyone connected: nothing produced, nothing late, nothing open.
+TEST_F(sim_device, stops_with_zero_counts_when_nothing_connected) {
+  net_->stop(sim_, SIGTERM);
+  const auto out = log();
+  EXPECT_NE(out.find("{\"event\":\"stopped\",\"produced\":0,\"late\":0,\"open_connections\":0,"), std::string::npos)
+      << out;
+}
+
 TEST_F(sim_device, a_captured_session_decodes_in_tshark_without_malformed_packets) {
   if (live_test::shell("command -v tcpdump >/dev/null && command -v tshark >/dev/null").status != 0)
     GTEST_SKIP() << "tcpdump or tshark is missing (Debian packages tcpdump, tshark)";

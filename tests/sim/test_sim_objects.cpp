@@ -66,6 +66,11 @@ TEST_F(sim_objects, parameter_class_attributes_count_the_params) {
   EXPECT_EQ(hex(ask(0x0E, 0x0F, 0, 8).data), "03 00");  // no [ParamClass]: instances, full attributes
   EXPECT_EQ(ask(0x0E, 0x0F, 0, 4).general, 0x14);
   EXPECT_EQ(ask(0x10, 0x0F, 0, 2, "07 00").general, 0x0E);
+  // Every known class attribute is read-only (0x0E); an unknown one is unsupported (0x14).
+  for (const std::uint32_t attr : {1u, 2u, 3u, 8u, 9u, 10u}) EXPECT_EQ(ask(0x10, 0x0F, 0, attr, "00 00").general, 0x0E) << attr;
+  EXPECT_EQ(ask(0x10, 0x0F, 0, 4, "00 00").general, 0x14);
+  // This EDS has no [Assembly]: the Assembly class's maximum instance is 0.
+  EXPECT_EQ(hex(ask(0x0E, 0x04, 0, 2).data), "00 00");
 }
 
 TEST_F(sim_objects, a_parameters_attributes_are_the_eds_fields) {
@@ -140,6 +145,10 @@ TEST_F(sim_file, attributes_describe_the_eds) {
   EXPECT_EQ(ask(0x10, 0x37, 0xC8, 6, "00 00 00 00").general, 0x0E);
   EXPECT_EQ(ask(0x0E, 0x37, 0xC9, 1).general, 0x16);
   EXPECT_EQ(hex(ask(0x0E, 0x37, 0, 2).data), "C8 00");
+  // Class attributes: revision 1 and one instance; attribute 4 is not one.
+  EXPECT_EQ(hex(ask(0x0E, 0x37, 0, 1).data), "01 00");
+  EXPECT_EQ(hex(ask(0x0E, 0x37, 0, 3).data), "01 00");
+  EXPECT_EQ(ask(0x0E, 0x37, 0, 4).general, 0x14);
 }
 
 TEST_F(sim_file, the_checksum_is_the_twos_complement_of_the_byte_sum) {
