@@ -13,14 +13,13 @@ namespace edsc {
 // ~30 bytes, so the calls' set-up cost more than their scanning. The index
 // is built for every diagnostic rendered and every document the language
 // server checks.
-std::vector<std::uint32_t> line_starts(std::string_view text) {
-  std::vector<std::uint32_t> starts{0};
+void append_line_starts(std::string_view text, std::size_t from, std::size_t to, std::vector<std::uint32_t>& starts) {
   const char* const p = text.data();
   const std::size_t n = text.size();
-  std::size_t i = 0;
+  std::size_t i = from;
 #ifdef __SSE2__
   const __m128i lf = _mm_set1_epi8('\n'), cr = _mm_set1_epi8('\r');
-  for (; n - i >= 16; i += 16) {
+  for (; to - i >= 16; i += 16) {
     const __m128i block = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p + i));
     const auto lfs = static_cast<std::uint32_t>(_mm_movemask_epi8(_mm_cmpeq_epi8(block, lf)));
     const auto crs = static_cast<std::uint32_t>(_mm_movemask_epi8(_mm_cmpeq_epi8(block, cr)));
@@ -31,10 +30,15 @@ std::vector<std::uint32_t> line_starts(std::string_view text) {
       starts.push_back(static_cast<std::uint32_t>(i + static_cast<std::size_t>(std::countr_zero(ends)) + 1));
   }
 #endif
-  for (; i < n; ++i) {
+  for (; i < to; ++i) {
     if (p[i] == '\n' || (p[i] == '\r' && (i + 1 == n || p[i + 1] != '\n')))
       starts.push_back(static_cast<std::uint32_t>(i + 1));
   }
+}
+
+std::vector<std::uint32_t> line_starts(std::string_view text) {
+  std::vector<std::uint32_t> starts{0};
+  append_line_starts(text, 0, text.size(), starts);
   return starts;
 }
 
