@@ -226,7 +226,33 @@ struct semicolon : pg::one<';'> {};
 // A keyword has a letter or `_` (`1_Foo`, `Param1`); `1 = 2` is a value, not an entry.
 struct entry_keyword_text : pg::seq<pg::star<pg::digit>, pg::sor<pg::alpha, pg::one<'_'>>, pg::star<pg::identifier_other>> {};
 struct keyword : entry_keyword_text {};
-struct new_entry_ahead : pg::seq<entry_keyword_text, skip, pg::one<'='>> {};
+// seq<entry_keyword_text, skip, one<'='>>, by one loop: it is tried before
+// every field and after every bare word (a value never starts an entry), so
+// it ran as often as all the tokens together. Only ever matched without
+// actions (inside at, not_at and disable), so skip is plain trivia here.
+constexpr bool is_digit(char c) { return c >= '0' && c <= '9'; }
+constexpr bool is_alpha(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+inline std::size_t entry_ahead_length(const char* const begin, const char* const end) noexcept {
+  const char* p = begin;
+  while (p != end && is_digit(*p)) ++p;
+  if (p == end || !(is_alpha(*p) || *p == '_')) return 0;
+  ++p;
+  while (p != end && (is_alpha(*p) || is_digit(*p) || *p == '_')) ++p;
+  p += trivia_length(p, end);
+  if (p == end || *p != '=') return 0;
+  return static_cast<std::size_t>(p + 1 - begin);
+}
+struct new_entry_ahead {
+  using rule_t = new_entry_ahead;
+  using subs_t = pg::empty_list;
+  template <typename ParseInput>
+  [[nodiscard]] static bool match(ParseInput& in) noexcept {
+    const std::size_t n = entry_ahead_length(in.current(), in.end());
+    if (n == 0) return false;
+    in.bump(n);  // the trivia may cross line ends
+    return true;
+  }
+};
 
 struct bare_char : pg::not_one<',', ';', '"', '{', '}', '$', ' ', '\t', '\r', '\n', '=', '[', ']'> {};
 // Words separated by single-line blanks stay one value: some tools write

@@ -1,5 +1,7 @@
 // EnumN, [EnumPar] and [Groups] (EDS_FORMAT.md §3.7.3, §3.8, §3.9, §7 rules 20-22).
+#include <algorithm>
 #include <map>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -24,14 +26,35 @@ void check_enum(const check_context& ctx, const model::param_enum& e) {
     return;
   }
   const auto& p = ctx.dev.params[e.param];
-  std::map<std::pair<bool, std::uint64_t>, const model::value*> seen;
-  for (const auto& pair : e.pairs) {
-    const auto& v = pair.val;
+  // The first pair with the same integer value, for each pair that repeats
+  // one: found by one stable sort instead of a map node per value (an
+  // enumeration lists hundreds).
+  struct keyed {
+    bool negative;
+    std::uint64_t magnitude;
+    std::uint32_t pair;
+  };
+  std::vector<keyed> keys;
+  keys.reserve(e.pairs.size());
+  for (std::uint32_t i = 0; i < e.pairs.size(); ++i)
+    if (const auto& v = e.pairs[i].val; v.is_integer()) keys.push_back({v.negative, v.magnitude, i});
+  std::stable_sort(keys.begin(), keys.end(), [](const keyed& a, const keyed& b) {
+    return std::pair{a.negative, a.magnitude} < std::pair{b.negative, b.magnitude};
+  });
+  std::vector<std::uint32_t> first_of(keys.empty() ? 0 : e.pairs.size(), model::none);
+  for (std::size_t k = 1; k < keys.size(); ++k) {
+    const auto& a = keys[k - 1];
+    const auto& b = keys[k];
+    if (a.negative == b.negative && a.magnitude == b.magnitude)
+      first_of[b.pair] = first_of[a.pair] == model::none ? a.pair : first_of[a.pair];
+  }
+  for (std::uint32_t i = 0; i < e.pairs.size(); ++i) {
+    const auto& v = e.pairs[i].val;
     if (!v.is_integer()) continue;
-    if (const auto [it, fresh] = seen.emplace(std::pair{v.negative, v.magnitude}, &v); !fresh) {
+    if (first_of[i] != model::none) {
       ctx.report_with_note(diag_id::enum_duplicate_value, ctx.where(v),
-                           fmt::format("{}{} lists value {} twice", en, e.number, ctx.raw(v)), ctx.where(*it->second),
-                           "first listed here");
+                           fmt::format("{}{} lists value {} twice", en, e.number, ctx.raw(v)),
+                           ctx.where(e.pairs[first_of[i]].val), "first listed here");
     }
     const bool below = is_number(p.min) && compare_numbers(v, p.min) < 0;
     const bool above = is_number(p.max) && compare_numbers(v, p.max) > 0;

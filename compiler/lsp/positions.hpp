@@ -37,11 +37,20 @@ class line_index {
   [[nodiscard]] std::uint32_t to_offset(position p) const;
   [[nodiscard]] span to_span(range r) const;
 
-  [[nodiscard]] std::uint32_t line_count() const { return static_cast<std::uint32_t>(starts_.size()); }
+  [[nodiscard]] std::uint32_t line_count() const {
+    scan_lines(text_.size());
+    return static_cast<std::uint32_t>(starts_.size());
+  }
 
  private:
+  // Lines are found as far as a question needs them: publishing the
+  // diagnostics of a large document asks about its first few positions only.
+  void scan_through(std::size_t offset) const;  // every start <= offset known
+  void scan_lines(std::size_t lines) const;     // starts_[lines] known, or all of them
+
   std::string_view text_;
-  std::vector<std::uint32_t> starts_;
+  mutable std::vector<std::uint32_t> starts_{0};
+  mutable std::size_t scanned_ = 0;  // text_[0, scanned_) has been looked at
 };
 
 // UTF-16 code units of the UTF-8 bytes `s`. Bytes that are not valid UTF-8

@@ -42,6 +42,11 @@ void on_did_change(session& s, const json& params) {
   }
   const auto version = version_of(params.at("textDocument"));
   for (std::size_t i = 0; i < changes.size(); ++i) {
+    // A whole new text is taken over, not copied (a document can be MBs).
+    if (!changes[i].where) {
+      d->text = std::move(changes[i].text);
+      continue;
+    }
     // The first change of a keystroke reuses the line index of the analysis
     // when the text has not moved on since.
     if (i == 0 && d->lines && d->analysed && d->analysed->text() == d->text)

@@ -14,4 +14,9 @@ namespace edsc {
 // empty line.
 [[nodiscard]] std::vector<std::uint32_t> line_starts(std::string_view text);
 
+// The same for the terminators in text[from, to), appended to `starts`: the
+// starts found are those in (from, to]. A CR at to - 1 looks at the byte
+// after it, so scanning a text in consecutive ranges finds the same starts.
+void append_line_starts(std::string_view text, std::size_t from, std::size_t to, std::vector<std::uint32_t>& starts);
+
 }  // namespace edsc

@@ -7,10 +7,13 @@
 namespace edsc {
 
 source_file::source_file(std::string path, std::string text)
-    : path_(std::move(path)), text_(std::move(text)) {}
+    : path_(std::move(path)), text_(std::move(text)), view_(text_) {}
+
+source_file::source_file(std::string path, std::unique_ptr<char[]> bytes, std::size_t size)
+    : path_(std::move(path)), bytes_(std::move(bytes)), view_(bytes_.get(), size) {}
 
 void source_file::index_lines() const {
-  std::call_once(indexed_, [this] { line_starts_ = line_starts(text_); });
+  std::call_once(indexed_, [this] { line_starts_ = line_starts(view_); });
 }
 
 std::uint32_t source_file::line_count() const {
@@ -31,8 +34,8 @@ std::string_view source_file::line_text(std::uint32_t line) const {
   if (line == 0 || line > line_starts_.size()) return {};
   const std::uint32_t begin = line_starts_[line - 1];
   std::uint32_t end = line < line_starts_.size() ? line_starts_[line] : size();
-  while (end > begin && (text_[end - 1] == '\n' || text_[end - 1] == '\r')) --end;
-  return std::string_view(text_).substr(begin, end - begin);
+  while (end > begin && (view_[end - 1] == '\n' || view_[end - 1] == '\r')) --end;
+  return view_.substr(begin, end - begin);
 }
 
 }  // namespace edsc
