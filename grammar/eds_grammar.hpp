@@ -29,6 +29,8 @@
 
 #include <tao/pegtl.hpp>
 
+#include "source/byte_masks.hpp"
+
 namespace edsc::grammar {
 
 namespace pg = tao::pegtl;
@@ -88,16 +90,9 @@ inline std::size_t bare_length(const char* const begin, const char* const end) n
 
 // Inside a string: an escape (`\` then any byte but a line end) is two bytes;
 // a `\` before a line end or the end of input stops the run, as do `"` and
-// the line end itself.
-// Non-zero when some byte of `word` equals `byte`; the lowest set bit marks
-// the first such byte exactly (a borrow can only mark bytes above it).
-constexpr std::uint64_t bytes_equal(std::uint64_t word, unsigned char byte) noexcept {
-  const std::uint64_t x = word ^ (0x0101010101010101ull * byte);
-  return (x - 0x0101010101010101ull) & ~x & 0x8080808080808080ull;
-}
-
-// String bodies average 18 bytes on real files: plain bytes are skipped eight
-// at a time, stopping at the first byte this loop must look at.
+// the line end itself. String bodies average 18 bytes on real files: plain
+// bytes are skipped eight at a time, stopping at the first byte this loop
+// must look at.
 inline std::size_t string_chars_length(const char* const begin, const char* const end) noexcept {
   const char* p = begin;
   while (p != end) {
@@ -124,23 +119,28 @@ inline std::size_t string_chars_length(const char* const begin, const char* cons
   return static_cast<std::size_t>(p - begin);
 }
 
-// A rule made of one of the scanners above; NonEmpty: fails on zero bytes.
-template <std::size_t (*Length)(const char*, const char*) noexcept, bool NonEmpty>
-struct line_scan {
-  using rule_t = line_scan;
+// A rule made of one scanning function; NonEmpty: fails on zero bytes;
+// InLine: what it matches never holds a line end, so the input's line count
+// need not be looked at.
+template <std::size_t (*Length)(const char*, const char*) noexcept, bool NonEmpty, bool InLine = true>
+struct scan {
+  using rule_t = scan;
   using subs_t = pg::empty_list;
   template <typename ParseInput>
   [[nodiscard]] static bool match(ParseInput& in) noexcept {
     const std::size_t n = Length(in.current(), in.end());
     if (NonEmpty && n == 0) return false;
-    in.bump_in_this_line(n);
+    if constexpr (InLine)
+      in.bump_in_this_line(n);
+    else
+      in.bump(n);
     return true;
   }
 };
 
-struct blank_run : line_scan<blank_length, true> {};
-struct comment_text : line_scan<comment_text_length, false> {};
-struct string_chars : line_scan<string_chars_length, false> {};
+struct blank_run : scan<blank_length, true> {};
+struct comment_text : scan<comment_text_length, false> {};
+struct string_chars : scan<string_chars_length, false> {};
 
 // ---- trivia -------------------------------------------------------------------
 // plus<one<' ', '\t'>>
@@ -242,23 +242,13 @@ inline std::size_t entry_ahead_length(const char* const begin, const char* const
   if (p == end || *p != '=') return 0;
   return static_cast<std::size_t>(p + 1 - begin);
 }
-struct new_entry_ahead {
-  using rule_t = new_entry_ahead;
-  using subs_t = pg::empty_list;
-  template <typename ParseInput>
-  [[nodiscard]] static bool match(ParseInput& in) noexcept {
-    const std::size_t n = entry_ahead_length(in.current(), in.end());
-    if (n == 0) return false;
-    in.bump(n);  // the trivia may cross line ends
-    return true;
-  }
-};
+struct new_entry_ahead : scan<entry_ahead_length, true, false> {};  // the trivia may cross line ends
 
 struct bare_char : pg::not_one<',', ';', '"', '{', '}', '$', ' ', '\t', '\r', '\n', '=', '[', ']'> {};
 // Words separated by single-line blanks stay one value: some tools write
 // unquoted EPATHs (`20 66 24 01`); the validator judges the text.
 // bare_run is plus<bare_char>.
-struct bare_run : line_scan<bare_length, true> {};
+struct bare_run : scan<bare_length, true> {};
 struct bare_gap : blank_run {};  // not `blank`: no trivia token inside a value
 struct bare : pg::seq<bare_run, pg::star<bare_gap, pg::not_at<new_entry_ahead>, bare_run>> {};
 struct lbrace : pg::one<'{'> {};

@@ -11,6 +11,8 @@
 #include <emmintrin.h>
 #endif
 
+#include "source/byte_masks.hpp"
+
 namespace edsc::lsp {
 
 namespace {
@@ -26,17 +28,13 @@ int hex_digit(char c) {
   return -1;
 }
 
-// A mask with the high bit of each of the eight bytes at p that ends a run
-// of plain bytes: a control character, a quote, a backslash or a non-ASCII
-// byte. The lowest set bit marks the first such byte exactly (a borrow only
-// reaches the bytes above it), so a run's end is found without a byte loop.
+// The eight bytes at p that end a run of plain bytes: a control character,
+// a quote, a backslash or a non-ASCII byte (source/byte_masks.hpp), so a
+// run's end is found without a byte loop.
 std::uint64_t special_bytes(const char* p) {
-  constexpr std::uint64_t ones = 0x0101010101010101ull, high = 0x8080808080808080ull;
   std::uint64_t x;
   std::memcpy(&x, p, sizeof x);
-  const auto has_zero = [&](std::uint64_t v) { return (v - ones) & ~v & high; };
-  const std::uint64_t below_space = (x - ones * 0x20) & ~x & high;
-  return below_space | has_zero(x ^ (ones * '"')) | has_zero(x ^ (ones * '\\')) | (x & high);
+  return bytes_below(x, 0x20) | bytes_equal(x, '"') | bytes_equal(x, '\\') | bytes_high(x);
 }
 
 bool is_special(unsigned char c) { return c < 0x20 || c >= 0x80 || c == '\\' || c == '"'; }
