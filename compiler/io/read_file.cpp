@@ -30,22 +30,33 @@ io_error over_limit(const std::string& path, std::uint64_t size, std::uint64_t m
                               max_bytes)};
 }
 
+// Reads into buf[0, len) until it is full or the file ends: the bytes read,
+// or -1 (errno set) on a read error.
+ssize_t read_into(int fd, char* buf, std::size_t len) {
+  std::size_t done = 0;
+  while (done < len) {
+    const ssize_t n = ::read(fd, buf + done, len - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return -1;
+    }
+    if (n == 0) break;
+    done += static_cast<std::size_t>(n);
+  }
+  return static_cast<ssize_t>(done);
+}
+
 // Appends what `fd` yields until end of file or `limit` bytes; false (errno
 // set) on a read error.
 bool read_to_end(int fd, std::string& text, std::uint64_t limit) {
   std::size_t done = text.size();
   for (;;) {
-    if (done == text.size()) {
-      text.resize(std::min<std::uint64_t>(limit, std::max<std::size_t>({done * 2, 65536, text.capacity()})));
-    }
+    text.resize(std::min<std::uint64_t>(limit, std::max<std::size_t>({done * 2, 65536, text.capacity()})));
     if (done == text.size()) break;  // the limit is reached
-    const ssize_t n = ::read(fd, text.data() + done, text.size() - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return false;
-    }
-    if (n == 0) break;
+    const ssize_t n = read_into(fd, text.data() + done, text.size() - done);
+    if (n < 0) return false;
     done += static_cast<std::size_t>(n);
+    if (done < text.size()) break;  // the end of the file came first
   }
   text.resize(done);
   return true;
@@ -70,18 +81,10 @@ read_result read_source(const std::string& path, std::uint64_t max_bytes) {
   // stat reported: a file that grows meanwhile is cut there, one that
   // shrinks ends early.
   std::unique_ptr<char[]> bytes(new char[size + 1]);
-  std::size_t done = 0;
-  while (done < size) {
-    const ssize_t n = ::read(fd, bytes.get() + done, size - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return errno_error(path, "read file");
-    }
-    if (n == 0) break;
-    done += static_cast<std::size_t>(n);
-  }
+  const ssize_t done = read_into(fd, bytes.get(), size);
+  if (done < 0) return errno_error(path, "read file");
   bytes[done] = '\0';
-  return std::make_unique<source_file>(path, std::move(bytes), done);
+  return std::make_unique<source_file>(path, std::move(bytes), static_cast<std::size_t>(done));
 }
 
 read_result read_stdin(const std::string& name, std::uint64_t max_bytes) {
