@@ -42,14 +42,19 @@ class ordered_checker {
   ordered_checker(const std::vector<std::string>& files, const check_options& options, unsigned jobs,
                   io::read_result stdin_read)
       : files_(files), options_(options), stdin_read_(std::move(stdin_read)), results_(files.size()) {
+    // One worker is the calling thread itself (take() checks on demand): a
+    // thread of its own would cost its start, and a malloc arena of its own
+    // whose every page is faulted in afresh.
     const unsigned n = std::max(1u, std::min<unsigned>(jobs, static_cast<unsigned>(files.size())));
-    for (unsigned i = 0; i < n; ++i) workers_.emplace_back([this] { work(); });
+    if (n > 1)
+      for (unsigned i = 0; i < n; ++i) workers_.emplace_back([this] { work(); });
   }
   ~ordered_checker() {
     for (auto& w : workers_) w.join();
   }
 
   checked_file take(std::size_t i) {
+    if (workers_.empty()) return check(i);
     std::unique_lock lock(mutex_);
     ready_.wait(lock, [&] { return results_[i].has_value(); });
     auto out = std::move(*results_[i]);
@@ -60,13 +65,17 @@ class ordered_checker {
  private:
   void work() {
     for (std::size_t i = next_++; i < files_.size(); i = next_++) {
-      auto result = io::is_stdin(files_[i]) ? check_stdin() : check_file(files_[i], options_);
+      auto result = check(i);
       {
         std::lock_guard lock(mutex_);
         results_[i] = std::move(result);
       }
       ready_.notify_all();
     }
+  }
+
+  checked_file check(std::size_t i) {
+    return io::is_stdin(files_[i]) ? check_stdin() : check_file(files_[i], options_);
   }
 
   const std::vector<std::string>& files_;
