@@ -1,5 +1,7 @@
 #include "lsp/documents.hpp"
 
+#include "edit/analyze.hpp"
+
 namespace edsc::lsp {
 
 void apply_change(std::string& text, const content_change& change, const line_index& lines) {
@@ -43,12 +45,35 @@ std::string uri_to_path(std::string_view uri) {
   return out;
 }
 
+std::string& document::text_to_edit() {
+  if (text_in_analysis_) {
+    text_ = analysed->text();
+    text_in_analysis_ = false;
+  }
+  return text_;
+}
+
+void document::analyse(const check_options& options) {
+  if (analysed) return;
+  lines.reset();
+  analysed = edit::analyze(path, std::move(text_), options);
+  text_.clear();
+  text_in_analysis_ = true;
+  lines = std::make_unique<line_index>(analysed->text());
+}
+
+void document::drop_analysis() {
+  (void)text_to_edit();
+  lines.reset();
+  analysed.reset();
+}
+
 document& document_store::open(std::string uri, std::int64_t version, std::string text) {
   document d;
   d.uri = uri;
   d.path = uri_to_path(uri);
   d.version = version;
-  d.text = std::move(text);
+  d.replace_text(std::move(text));
   auto& slot = docs_[std::move(uri)];
   slot = std::move(d);
   return slot;

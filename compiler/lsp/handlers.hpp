@@ -7,20 +7,22 @@
 namespace edsc::lsp {
 
 using request_handler = json (*)(session&, const json& params);
-using notification_handler = void (*)(session&, const json& params);
+// Notifications own their message: they may take it apart (a document's
+// text is moved out of it, not copied).
+using notification_handler = void (*)(session&, json& params);
 
 // lifecycle.cpp
 json on_initialize(session& s, const json& params);
 json on_shutdown(session& s, const json& params);
-void on_initialized(session& s, const json& params);
-void on_exit(session& s, const json& params);
-void on_did_change_configuration(session& s, const json& params);
+void on_initialized(session& s, json& params);
+void on_exit(session& s, json& params);
+void on_did_change_configuration(session& s, json& params);
 
 // sync.cpp
-void on_did_open(session& s, const json& params);
-void on_did_change(session& s, const json& params);
-void on_did_close(session& s, const json& params);
-void on_did_save(session& s, const json& params);
+void on_did_open(session& s, json& params);
+void on_did_change(session& s, json& params);
+void on_did_close(session& s, json& params);
+void on_did_save(session& s, json& params);
 void publish_diagnostics(session& s, document& d);
 
 // code_actions.cpp, formatting.cpp

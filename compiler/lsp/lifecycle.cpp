@@ -44,16 +44,16 @@ json on_initialize(session& s, const json& params) {
   return json{{"capabilities", capabilities()}, {"serverInfo", json{{"name", "edsc"}, {"version", EDSC_VERSION_STRING}}}};
 }
 
-void on_initialized(session&, const json&) {}
+void on_initialized(session&, json&) {}
 
 json on_shutdown(session& s, const json&) {
   s.shutting_down = true;
   return nullptr;
 }
 
-void on_exit(session& s, const json&) { s.exited = true; }
+void on_exit(session& s, json&) { s.exited = true; }
 
-void on_did_change_configuration(session& s, const json& params) {
+void on_did_change_configuration(session& s, json& params) {
   if (!params.is_object() || !params.contains("settings")) return;
   const auto flags = warnings_of(params["settings"]);
   if (flags.is_null()) return;

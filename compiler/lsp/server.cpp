@@ -3,7 +3,6 @@
 #include <exception>
 #include <unordered_map>
 
-#include "edit/analyze.hpp"
 #include "lsp/convert.hpp"
 #include "lsp/handlers.hpp"
 
@@ -56,10 +55,7 @@ void session::log_message(const std::string& message) {
 }
 
 void session::analyse(document& d) {
-  if (d.analysed) return;
-  d.lines.reset();
-  d.analysed = edit::analyze(d.path, d.text, options);
-  d.lines = std::make_unique<line_index>(d.analysed->text());
+  d.analyse(options);
 }
 
 document& session::analysed(const json& params) {
@@ -92,7 +88,7 @@ void session::set_warnings(const json& flags) {
   options = std::move(fresh);
   // Everything open is judged again under the new policy.
   for (auto& [uri, d] : docs.all()) {
-    d.analysed.reset();
+    d.drop_analysis();
     d.diagnostics_due = true;
   }
 }
@@ -105,7 +101,7 @@ server::server(server_options options, send_fn send, log_fn log) {
 }
 
 void server::handle(std::string_view body) {
-  const auto in = parse_incoming(body);
+  auto in = parse_incoming(body);
   try {
     dispatch(in);
   } catch (const std::exception& e) {
@@ -114,7 +110,7 @@ void server::handle(std::string_view body) {
   }
 }
 
-void server::dispatch(const incoming& in) {
+void server::dispatch(incoming& in) {
   using kind = incoming::kind;
   switch (in.what) {
     case kind::invalid:

@@ -58,7 +58,7 @@ class server {
   [[nodiscard]] int exit_code() const { return s_.shutting_down ? 0 : 1; }
 
  private:
-  void dispatch(const incoming& in);
+  void dispatch(incoming& in);
   session s_;
 };
 

@@ -51,19 +51,30 @@ bool content_length(std::string_view header, std::size_t& length, std::string& e
 
 }  // namespace
 
-bool frame_reader::fill() {
+bool frame_reader::fill(std::size_t want) {
   if (eof_) return false;
-  if (pos_ > 0 && pos_ >= buf_.size() / 2) {  // drop what was handed out
-    buf_.erase(0, pos_);
+  const std::size_t pending_bytes = end_ - pos_;
+  if (capacity_ - end_ < want) {
+    // Drop what was handed out; grow when that does not make the room.
+    const std::size_t needed = pending_bytes + want;
+    if (needed > capacity_) {
+      const std::size_t grown = std::max(needed, capacity_ * 2);
+      auto bigger = std::make_unique_for_overwrite<char[]>(grown);
+      std::copy_n(buf_.get() + pos_, pending_bytes, bigger.get());
+      buf_ = std::move(bigger);
+      capacity_ = grown;
+    } else {
+      std::copy_n(buf_.get() + pos_, pending_bytes, buf_.get());
+    }
     pos_ = 0;
+    end_ = pending_bytes;
   }
-  char chunk[65536];
-  const auto n = read_(chunk, sizeof chunk);
+  const auto n = read_(buf_.get() + end_, capacity_ - end_);
   if (n == 0) {
     eof_ = true;
     return false;
   }
-  buf_.append(chunk, n);
+  end_ += n;
   return true;
 }
 
@@ -96,12 +107,12 @@ std::optional<frame> frame_reader::next_or_blank() {
     if (body_begin > 0) break;
     searched = p.size();
     if (p.size() > max_header_bytes) {
-      pos_ = buf_.size();  // skip it all: there is no telling where the next message starts
+      pos_ = end_;  // skip it all: there is no telling where the next message starts
       return frame{frame::kind::bad_header, {}, "header part longer than 64 KiB"};
     }
     if (!fill()) {
       const bool junk = !trim(pending()).empty() && pending().find_first_not_of("\r\n") != std::string_view::npos;
-      pos_ = buf_.size();
+      pos_ = end_;
       return junk ? frame{frame::kind::bad_header, {}, "input ended inside a header"} : frame{};
     }
   }
@@ -122,7 +133,7 @@ std::optional<frame> frame_reader::next_or_blank() {
     pos_ += body_begin;
     // Skip the body as it arrives, without keeping it.
     while (length > 0) {
-      const auto take = std::min(length, buf_.size() - pos_);
+      const auto take = std::min(length, end_ - pos_);
       pos_ += take;
       length -= take;
       if (length > 0 && !fill()) break;
@@ -130,13 +141,15 @@ std::optional<frame> frame_reader::next_or_blank() {
     return frame{frame::kind::bad_header, {}, "message larger than 512 MiB"};
   }
   pos_ += body_begin;
-  while (buf_.size() - pos_ < length) {
-    if (!fill()) {
-      pos_ = buf_.size();
+  // The rest of the body is read into room made for all of it at once (up
+  // to 64 MiB: a header's claim alone does not get more memory than that).
+  while (end_ - pos_ < length) {
+    if (!fill(std::min<std::size_t>(length - (end_ - pos_), 64u << 20))) {
+      pos_ = end_;
       return frame{frame::kind::bad_header, {}, "input ended inside a message body"};
     }
   }
-  frame f{frame::kind::message, buf_.substr(pos_, length), {}};
+  frame f{frame::kind::message, pending().substr(0, length), {}};
   pos_ += length;
   return f;
 }

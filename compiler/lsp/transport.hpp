@@ -4,6 +4,7 @@
 // then N bytes of JSON.
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -20,7 +21,10 @@ using read_fn = std::function<std::size_t(char* buf, std::size_t n)>;
 
 struct frame {
   enum class kind { message, bad_header, end } what = kind::end;
-  std::string body;   // kind::message
+  // kind::message: the bytes in the reader's buffer, valid until its next
+  // next(): a document's text arrives in one message of up to hundreds of
+  // kilobytes, and the server only decodes it.
+  std::string_view body;
   std::string error;  // kind::bad_header: what was wrong (the header was skipped)
 };
 
@@ -33,16 +37,22 @@ class frame_reader {
 
   [[nodiscard]] frame next();
   // Bytes already read and not yet handed out: the next message may be here.
-  [[nodiscard]] bool buffered() const { return pos_ < buf_.size(); }
+  [[nodiscard]] bool buffered() const { return pos_ < end_; }
 
  private:
   std::optional<frame> next_or_blank();  // nullopt: skipped blank lines
-  bool fill();                           // false at end of input
-  std::string_view pending() const { return std::string_view(buf_).substr(pos_); }
+  // Reads once into room for at least `want` more bytes; false at end of
+  // input. Moves the pending bytes (not their offsets from pos_).
+  bool fill(std::size_t want = 65536);
+  std::string_view pending() const { return {buf_.get() + pos_, end_ - pos_}; }
 
   read_fn read_;
-  std::string buf_;
+  // Bytes are read straight into place: [pos_, end_) are read and not yet
+  // handed out, [end_, capacity_) is room.
+  std::unique_ptr<char[]> buf_;
+  std::size_t capacity_ = 0;
   std::size_t pos_ = 0;
+  std::size_t end_ = 0;
   bool eof_ = false;
 };
 

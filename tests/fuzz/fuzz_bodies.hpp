@@ -205,7 +205,7 @@ inline std::string lsp_body(std::string_view input) {
       return take;
     });
     for (auto f = reader.next(); f.what != lsp::frame::kind::end; f = reader.next()) {
-      if (f.what == lsp::frame::kind::message) bodies.push_back(std::move(f.body));
+      if (f.what == lsp::frame::kind::message) bodies.emplace_back(f.body);
     }
   } else if (input.substr(0, 1) == "{") {
     bodies.emplace_back(R"({"jsonrpc":"2.0","id":0,"method":"initialize","params":{"capabilities":{}}})");

@@ -115,7 +115,13 @@ TEST(LspPositions, FileUrisBecomePaths) {
   EXPECT_EQ(uri_to_path("untitled:1"), "untitled:1");
 }
 
-std::vector<frame> frames_of(const std::string& bytes, std::size_t chunk) {
+// A frame's body is valid until the reader's next call: keep copies.
+struct owned_frame {
+  frame::kind what;
+  std::string body;
+};
+
+std::vector<owned_frame> frames_of(const std::string& bytes, std::size_t chunk) {
   std::size_t at = 0;
   frame_reader r([&](char* buf, std::size_t n) {
     const auto take = std::min({n, chunk, bytes.size() - at});
@@ -123,8 +129,8 @@ std::vector<frame> frames_of(const std::string& bytes, std::size_t chunk) {
     at += take;
     return take;
   });
-  std::vector<frame> out;
-  for (auto f = r.next(); f.what != frame::kind::end; f = r.next()) out.push_back(f);
+  std::vector<owned_frame> out;
+  for (auto f = r.next(); f.what != frame::kind::end; f = r.next()) out.push_back({f.what, std::string(f.body)});
   return out;
 }
 
