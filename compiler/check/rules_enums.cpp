@@ -38,11 +38,17 @@ void check_enum(const check_context& ctx, const model::param_enum& e) {
   keys.reserve(e.pairs.size());
   for (std::uint32_t i = 0; i < e.pairs.size(); ++i)
     if (const auto& v = e.pairs[i].val; v.is_integer()) keys.push_back({v.negative, v.magnitude, i});
-  std::stable_sort(keys.begin(), keys.end(), [](const keyed& a, const keyed& b) {
+  const auto order = [](const keyed& a, const keyed& b) {
     return std::pair{a.negative, a.magnitude} < std::pair{b.negative, b.magnitude};
-  });
-  std::vector<std::uint32_t> first_of(keys.empty() ? 0 : e.pairs.size(), model::none);
-  for (std::size_t k = 1; k < keys.size(); ++k) {
+  };
+  // Most enumerations count up (0, 1, 2...): strictly ascending keys repeat
+  // nothing, and need neither the sort nor the table.
+  const bool ascending = std::adjacent_find(keys.begin(), keys.end(), [&](const keyed& a, const keyed& b) {
+                           return !order(a, b);
+                         }) == keys.end();
+  if (!ascending) std::stable_sort(keys.begin(), keys.end(), order);
+  std::vector<std::uint32_t> first_of(ascending ? 0 : e.pairs.size(), model::none);
+  for (std::size_t k = 1; !ascending && k < keys.size(); ++k) {
     const auto& a = keys[k - 1];
     const auto& b = keys[k];
     if (a.negative == b.negative && a.magnitude == b.magnitude)
@@ -51,7 +57,7 @@ void check_enum(const check_context& ctx, const model::param_enum& e) {
   for (std::uint32_t i = 0; i < e.pairs.size(); ++i) {
     const auto& v = e.pairs[i].val;
     if (!v.is_integer()) continue;
-    if (first_of[i] != model::none) {
+    if (!ascending && first_of[i] != model::none) {
       ctx.report_with_note(diag_id::enum_duplicate_value, ctx.where(v),
                            fmt::format("{}{} lists value {} twice", en, e.number, ctx.raw(v)),
                            ctx.where(e.pairs[first_of[i]].val), "first listed here");
