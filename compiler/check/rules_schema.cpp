@@ -19,6 +19,8 @@ std::string canonical_of(std::string_view canonical_stem, std::string_view writt
 
 void check_case(const check_context& ctx, span where, std::string_view canonical_stem, const char* what) {
   const auto written = ctx.tree.text(where);
+  // Written as the format spells it (nearly every name): nothing to build.
+  if (written.starts_with(canonical_stem)) return;
   const auto canonical = canonical_of(canonical_stem, written);
   // Only a difference of case: patterned names (`ClassN_VendorM`) match otherwise.
   if (written == canonical || fold_name(written) != fold_name(canonical)) return;
