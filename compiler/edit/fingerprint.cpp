@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdint>
+
+#include <nlohmann/json.hpp>
 
 #include "edit/analyze.hpp"
 #include "emit/emit_json.hpp"
@@ -81,9 +85,8 @@ void order_like_fmt(nlohmann::ordered_json& j, const char* array, const char* ke
 
 }  // namespace
 
-std::string model_fingerprint(const std::string& path, const std::string& text) {
-  const auto a = analyze(path, text);
-  auto j = emit::to_json(a->dev, *a->source);
+nlohmann::ordered_json meaning_of(const analysis& a) {
+  auto j = emit::to_json(a.dev, *a.source);
   normalise(j);
   // Section order and case mean nothing in an EDS, but the dump lists
   // sections and the entries it keeps raw as written, and fmt moves the
@@ -95,7 +98,49 @@ std::string model_fingerprint(const std::string& path, const std::string& text) 
   }
   order_like_fmt(j, "sections", "name");
   order_like_fmt(j, "unknown_entries", "section");
-  return j.dump();
+  return j;
+}
+
+bool same_meaning(const nlohmann::ordered_json& a, const nlohmann::ordered_json& b) {
+  using kind = nlohmann::ordered_json::value_t;
+  const auto integral = [](kind k) { return k == kind::number_integer || k == kind::number_unsigned; };
+  if (integral(a.type()) && integral(b.type())) {
+    // Written alike when equal: 5 as a signed or an unsigned number.
+    if (a.is_number_unsigned() == b.is_number_unsigned()) return a == b;
+    const auto& u = a.is_number_unsigned() ? a : b;
+    const auto& s = a.is_number_unsigned() ? b : a;
+    return s.get<std::int64_t>() >= 0 && static_cast<std::uint64_t>(s.get<std::int64_t>()) == u.get<std::uint64_t>();
+  }
+  // Any NaN is written null.
+  const auto null_like = [](const nlohmann::ordered_json& j) {
+    return j.is_null() || (j.is_number_float() && std::isnan(j.get<double>()));
+  };
+  if (null_like(a) || null_like(b)) return null_like(a) && null_like(b);
+  if (a.type() != b.type()) return false;
+  switch (a.type()) {
+    case kind::object: {
+      if (a.size() != b.size()) return false;
+      for (auto x = a.begin(), y = b.begin(); x != a.end(); ++x, ++y)
+        if (x.key() != y.key() || !same_meaning(x.value(), y.value())) return false;
+      return true;
+    }
+    case kind::array: {
+      if (a.size() != b.size()) return false;
+      for (std::size_t i = 0; i < a.size(); ++i)
+        if (!same_meaning(a[i], b[i])) return false;
+      return true;
+    }
+    case kind::number_float: {
+      // As serialised: -0.0 is not 0.0.
+      const double x = a.get<double>(), y = b.get<double>();
+      return x == y && std::signbit(x) == std::signbit(y);
+    }
+    default: return a == b;  // strings, booleans, null, binary
+  }
+}
+
+std::string model_fingerprint(const std::string& path, const std::string& text) {
+  return meaning_of(*analyze(path, text)).dump();
 }
 
 }  // namespace edsc::edit

@@ -5,6 +5,10 @@
 #include "edit/editor.hpp"
 #include "edit/fingerprint.hpp"
 
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
 namespace authoring {
 namespace {
 
@@ -40,6 +44,29 @@ TEST_F(EditDetails, ResizeSaysWhenBitsStillEndInTheLastByte) {
   ASSERT_GE(ed.log().size(), 2u);
   EXPECT_NE(ed.log()[1].find("significant bits stay 16: they still end in the last byte"), std::string::npos)
       << ed.log()[1];
+}
+
+// fmt compares meanings without serialising them: equal exactly when the
+// serialisations would be.
+TEST_F(EditDetails, SameMeaningIsEqualSerialisations) {
+  using json = nlohmann::ordered_json;
+  const auto same = [](const json& a, const json& b) {
+    const bool result = edsc::edit::same_meaning(a, b);
+    EXPECT_EQ(result, a.dump() == b.dump()) << a.dump() << " / " << b.dump();
+    return result;
+  };
+  EXPECT_TRUE(same(json(5), json(5u)));  // one number, whichever way it is held
+  EXPECT_FALSE(same(json(-5), json(5u)));
+  EXPECT_FALSE(same(json(1), json(1.0)));
+  EXPECT_FALSE(same(json(0.0), json(-0.0)));
+  EXPECT_TRUE(same(json(std::nan("")), json(-std::nan(""))));  // both written null
+  EXPECT_TRUE(same(json(std::nan("")), json(nullptr)));
+  EXPECT_FALSE(same(json("5"), json(5)));
+  EXPECT_TRUE(same(json{{"a", 1}, {"b", json::array({1, "x"})}}, json{{"a", 1}, {"b", json::array({1, "x"})}}));
+  EXPECT_FALSE(same(json{{"a", 1}, {"b", 2}}, json{{"b", 2}, {"a", 1}}));  // key order is written
+  EXPECT_FALSE(same(json{{"a", json::array({1, 2})}}, json{{"a", json::array({1, 3})}}));
+  EXPECT_FALSE(same(json{{"a", json::array({1, 2})}}, json{{"a", json::array({1, 2, 3})}}));
+  EXPECT_FALSE(same(json{{"a", 1}}, json{{"b", 1}}));
 }
 
 TEST_F(EditDetails, FingerprintIgnoresWhereFileAndDeviceAre) {
