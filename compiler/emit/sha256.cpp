@@ -2,9 +2,9 @@
 
 namespace edsc::emit {
 
-namespace {
+namespace detail {
 
-constexpr std::uint32_t round_constants[64] = {
+const std::uint32_t sha256_round_constants[64] = {
     0x428a2f98, 0x71374491, 0xb5c0fbcf, 0xe9b5dba5, 0x3956c25b, 0x59f111f1, 0x923f82a4, 0xab1c5ed5,
     0xd807aa98, 0x12835b01, 0x243185be, 0x550c7dc3, 0x72be5d74, 0x80deb1fe, 0x9bdc06a7, 0xc19bf174,
     0xe49b69c1, 0xefbe4786, 0x0fc19dc6, 0x240ca1cc, 0x2de92c6f, 0x4a7484aa, 0x5cb0a9dc, 0x76f988da,
@@ -14,6 +14,12 @@ constexpr std::uint32_t round_constants[64] = {
     0x19a4c116, 0x1e376c08, 0x2748774c, 0x34b0bcb5, 0x391c0cb3, 0x4ed8aa4a, 0x5b9cca4f, 0x682e6ff3,
     0x748f82ee, 0x78a5636f, 0x84c87814, 0x8cc70208, 0x90befffa, 0xa4506ceb, 0xbef9a3f7, 0xc67178f2,
 };
+
+}  // namespace detail
+
+namespace {
+
+using detail::sha256_round_constants;
 
 constexpr std::uint32_t rotr(std::uint32_t x, int n) { return (x >> n) | (x << (32 - n)); }
 
@@ -30,7 +36,7 @@ void compress(std::uint32_t (&h)[8], const std::uint8_t* block) {
   std::uint32_t a = h[0], b = h[1], c = h[2], d = h[3], e = h[4], f = h[5], g = h[6], k = h[7];
   for (int i = 0; i < 64; ++i) {
     const auto t1 = k + (rotr(e, 6) ^ rotr(e, 11) ^ rotr(e, 25)) + ((e & f) ^ (~e & g)) +
-                    round_constants[i] + w[i];
+                    sha256_round_constants[i] + w[i];
     const auto t2 = (rotr(a, 2) ^ rotr(a, 13) ^ rotr(a, 22)) + ((a & b) ^ (a & c) ^ (b & c));
     k = g; g = f; f = e; e = d + t1; d = c; c = b; b = a; a = t1 + t2;
   }
@@ -39,12 +45,20 @@ void compress(std::uint32_t (&h)[8], const std::uint8_t* block) {
 
 }  // namespace
 
+void detail::sha256_blocks_portable(std::uint32_t (&h)[8], const std::uint8_t* p, std::size_t blocks) {
+  for (; blocks > 0; --blocks, p += 64) compress(h, p);
+}
+
 std::array<std::uint8_t, 32> sha256(std::string_view bytes) {
+  static const auto blocks_of = detail::sha256_extensions() ? detail::sha256_blocks_extensions
+                                                           : detail::sha256_blocks_portable;
   std::uint32_t h[8] = {0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a,
                         0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
   const auto* p = reinterpret_cast<const std::uint8_t*>(bytes.data());
   std::size_t n = bytes.size();
-  for (; n >= 64; n -= 64, p += 64) compress(h, p);
+  blocks_of(h, p, n / 64);
+  p += n / 64 * 64;
+  n %= 64;
   // The tail, the 0x80 marker and the 64-bit bit length fill one or two blocks.
   std::uint8_t tail[128] = {};
   for (std::size_t i = 0; i < n; ++i) tail[i] = p[i];
@@ -52,7 +66,7 @@ std::array<std::uint8_t, 32> sha256(std::string_view bytes) {
   const std::size_t blocks = n + 9 <= 64 ? 1 : 2;
   const std::uint64_t bits = static_cast<std::uint64_t>(bytes.size()) * 8;
   for (int i = 0; i < 8; ++i) tail[blocks * 64 - 1 - i] = static_cast<std::uint8_t>(bits >> (8 * i));
-  for (std::size_t b = 0; b < blocks; ++b) compress(h, tail + 64 * b);
+  blocks_of(h, tail, blocks);
   std::array<std::uint8_t, 32> out{};
   for (int i = 0; i < 8; ++i)
     for (int j = 0; j < 4; ++j) out[4 * i + j] = static_cast<std::uint8_t>(h[i] >> (24 - 8 * j));
