@@ -186,22 +186,20 @@ model::origin context::origin_of(std::uint32_t entry, std::uint32_t index) const
   return {entry, span{at, at}};
 }
 
-value context::field(std::uint32_t entry, std::uint32_t index, const schema::field_desc* desc) {
+void context::field_into(value& v, std::uint32_t entry, std::uint32_t index, const schema::field_desc* desc) {
   static constexpr schema::field_desc any{"field", value_type::any};
   const auto& d = desc ? *desc : any;
-  value v;
   v.allowed = d.refs;
   // The origin as origin_of gives it, from the one lookup of the field that
-  // lowering it needs anyway (this runs once per field of the file).
+  // lowering it needs anyway.
   const auto& e = tree.entries[entry];
   v.from.entry = entry;
   if (index >= e.fields_count) {
     v.from.where = origin_of(entry, index).where;
-    return v;
+    return;
   }
   const auto& f = tree.field_of(e, index);
   v.from.where = f.where;
-  const auto raw = tree.text(f.where);
   switch (f.kind) {
     case cst::field_kind::empty:
       break;
@@ -215,18 +213,18 @@ value context::field(std::uint32_t entry, std::uint32_t index, const schema::fie
       break;
     case cst::field_kind::dataset:
       v.kind = value_kind::dataset;
-      v.text = raw;
+      v.text = tree.text(f.where);
       v.state = value_state::ok;
       if (d.type != value_type::stringi && d.type != value_type::any) mark_invalid(v, invalid_reason::wrong_kind);
       break;
     case cst::field_kind::bare:
-      lower_bare(raw, d, v);
+      lower_bare(tree.text(f.where), d, v);
       break;
   }
-  return v;
 }
 
-value context::typed(std::uint32_t entry, std::uint32_t index, const schema::cip_type_info* type, bool untyped) {
+void context::typed_into(value& v, std::uint32_t entry, std::uint32_t index, const schema::cip_type_info* type,
+                         bool untyped) {
   using schema::type_class;
   schema::field_desc d{"value", value_type::typed};
   if (type) {
@@ -241,11 +239,10 @@ value context::typed(std::uint32_t entry, std::uint32_t index, const schema::cip
       case type_class::other: d = {"value", value_type::any}; break;
     }
   }
-  value v = field(entry, index, &d);
+  field_into(v, entry, index, &d);
   // Without a usable data type nothing can be said about the value: keep
   // what the syntax gave, but flag it so nobody trusts it as typed.
   if (!type && !untyped && v.present()) mark_invalid(v, invalid_reason::unknown_type);
-  return v;
 }
 
 std::vector<value> context::all_fields(std::uint32_t entry, const schema::keyword_desc* k) {
