@@ -1,5 +1,7 @@
 // Lowering one field: the CST field's syntax (empty / string / bare /
 // dataset) meets the schema's pseudo-type and becomes a typed value.
+#include <array>
+
 #include "lower/context.hpp"
 #include "model/decode.hpp"
 #include "schema/text.hpp"
@@ -96,26 +98,19 @@ bool vendor_value(std::string_view s, value& v) {
   return true;
 }
 
-// A bare lexeme under a pseudo-type.
+// A bare lexeme under a pseudo-type. Where an integer may stand it is tried
+// first: it is the common case, and text that reads as an integer (digits,
+// sign, 0x) holds no `_` and no reference stem, so it is never a vendor
+// keyword nor a reference: the order of the tries changes nothing else.
 void lower_bare(std::string_view s, const schema::field_desc& d, value& v) {
   bool lexed = false;
   switch (d.type) {
     case value_type::integer:
-    case value_type::number_ref:
-    case value_type::reference:
-    case value_type::int_or_ref:
-    case value_type::member:
-      if (vendor_value(s, v)) return;
-      break;
-    default: break;
-  }
-  switch (d.type) {
-    case value_type::integer:
-      if (!try_integer(s, d.cip, v)) mark_invalid(v, invalid_reason::not_a_number);
+      if (!try_integer(s, d.cip, v) && !vendor_value(s, v)) mark_invalid(v, invalid_reason::not_a_number);
       return;
     case value_type::number_ref:
       if (!try_integer(s, d.cip, v)) {
-        mark_invalid(v, invalid_reason::not_a_number);
+        if (!vendor_value(s, v)) mark_invalid(v, invalid_reason::not_a_number);
       } else if (v.magnitude != 0 && !v.negative && v.ok()) {  // 0 means "none"
         v.is_ref = true;
         v.ref.number = static_cast<std::uint32_t>(v.magnitude);
@@ -154,11 +149,11 @@ void lower_bare(std::string_view s, const schema::field_desc& d, value& v) {
       return;
     }
     case value_type::reference:
-      if (!try_reference(s, d.refs, v)) mark_invalid(v, invalid_reason::bad_reference);
+      if (!vendor_value(s, v) && !try_reference(s, d.refs, v)) mark_invalid(v, invalid_reason::bad_reference);
       return;
     case value_type::int_or_ref:
     case value_type::member:
-      if (!try_reference(s, d.refs, v) && !try_integer(s, d.cip, v))
+      if (!try_integer(s, d.cip, v) && !vendor_value(s, v) && !try_reference(s, d.refs, v))
         mark_invalid(v, invalid_reason::bad_reference);
       return;
     case value_type::any:
@@ -223,26 +218,55 @@ void context::field_into(value& v, std::uint32_t entry, std::uint32_t index, con
   }
 }
 
+namespace {
+
+// The descriptor a value of that CIP type is read with.
+schema::field_desc typed_desc(const schema::cip_type_info& type) {
+  using schema::type_class;
+  switch (type.cls) {
+    case type_class::signed_int:
+    case type_class::unsigned_int:
+    case type_class::bit_string: return {"value", value_type::integer, type.code};
+    case type_class::real: return {"value", value_type::real};
+    case type_class::string: return {"value", value_type::string};
+    case type_class::epath: return {"value", value_type::epath};
+    case type_class::stringi: return {"value", value_type::stringi};
+    case type_class::other: break;
+  }
+  return {"value", value_type::any};
+}
+
+// One descriptor per elementary type code, built once: min, max, default
+// and every enumeration value are typed, so they are not rebuilt per value.
+// nullptr for a type that is not a row of the type table.
+const schema::field_desc* table_desc(const schema::cip_type_info& type) {
+  static constexpr std::uint32_t first = 0xC0, count = 0x20;
+  static const auto table = [] {
+    std::array<schema::field_desc, count> t{};
+    for (std::uint32_t c = 0; c < count; ++c)
+      if (const auto* info = schema::find_type(first + c)) t[c] = typed_desc(*info);
+    return t;
+  }();
+  const std::uint32_t i = type.code - first;
+  return i < count && schema::find_type(type.code) == &type ? &table[i] : nullptr;
+}
+
+}  // namespace
+
 void context::typed_into(value& v, std::uint32_t entry, std::uint32_t index, const schema::cip_type_info* type,
                          bool untyped) {
-  using schema::type_class;
-  schema::field_desc d{"value", value_type::typed};
-  if (type) {
-    switch (type->cls) {
-      case type_class::signed_int:
-      case type_class::unsigned_int:
-      case type_class::bit_string: d = {"value", value_type::integer, type->code}; break;
-      case type_class::real: d = {"value", value_type::real}; break;
-      case type_class::string: d = {"value", value_type::string}; break;
-      case type_class::epath: d = {"value", value_type::epath}; break;
-      case type_class::stringi: d = {"value", value_type::stringi}; break;
-      case type_class::other: d = {"value", value_type::any}; break;
-    }
+  static constexpr schema::field_desc by_syntax{"value", value_type::typed};
+  if (!type) {
+    field_into(v, entry, index, &by_syntax);
+    // Without a usable data type nothing can be said about the value: keep
+    // what the syntax gave, but flag it so nobody trusts it as typed.
+    if (!untyped && v.present()) mark_invalid(v, invalid_reason::unknown_type);
+  } else if (const auto* d = table_desc(*type)) {
+    field_into(v, entry, index, d);
+  } else {
+    const auto own = typed_desc(*type);
+    field_into(v, entry, index, &own);
   }
-  field_into(v, entry, index, &d);
-  // Without a usable data type nothing can be said about the value: keep
-  // what the syntax gave, but flag it so nobody trusts it as typed.
-  if (!type && !untyped && v.present()) mark_invalid(v, invalid_reason::unknown_type);
 }
 
 std::vector<value> context::all_fields(std::uint32_t entry, const schema::keyword_desc* k) {
