@@ -15,7 +15,13 @@ struct context {
   const cst::tree& tree;
   model::device& dev;
   std::uint32_t section = model::none;  // CST index of the section being lowered
-  std::vector<std::uint32_t> deferred_enums;  // EnumN entries, lowered once all ParamN are known
+  // EnumN entries, lowered once all ParamN are known; their keyword match is
+  // kept so that it is not looked up again.
+  struct deferred_enum {
+    std::uint32_t entry;
+    schema::keyword_match match;
+  };
+  std::vector<deferred_enum> deferred_enums;
 
   [[nodiscard]] std::uint32_t field_count(std::uint32_t entry) const {
     return tree.entries[entry].fields_count;

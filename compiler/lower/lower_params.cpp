@@ -96,7 +96,7 @@ void lower_params(context& c, std::uint32_t entry, const schema::keyword_match& 
     case entry_id::constructed_param_n: return lower_param(c, entry, m);
     case entry_id::enum_n:
     case entry_id::proxy_enum_n:
-    case entry_id::proxied_enum_n: c.deferred_enums.push_back(entry); return;
+    case entry_id::proxied_enum_n: c.deferred_enums.push_back({entry, m}); return;
     case entry_id::enum_par_n: return lower_enum_par(c, entry, m);
     case entry_id::group_n: return lower_group(c, entry, m);
     default: return lower_param_class(c, entry, m);
