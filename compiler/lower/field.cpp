@@ -283,7 +283,7 @@ std::vector<value> context::all_fields(std::uint32_t entry, const schema::keywor
   std::vector<value> out;
   const auto n = field_count(entry);
   out.reserve(n);
-  for (std::uint32_t i = 0; i < n; ++i) out.push_back(field(entry, i, k ? schema::field_at(*k, i) : nullptr));
+  for (std::uint32_t i = 0; i < n; ++i) field_into(out.emplace_back(), entry, i, k ? schema::field_at(*k, i) : nullptr);
   return out;
 }
 

@@ -17,9 +17,13 @@ void lower_assem(context& c, std::uint32_t entry, const schema::keyword_match& m
   c.fill(entry, k, a, model::slots::assembly, nullptr);
   const auto n = c.field_count(entry);
   const std::uint32_t first = static_cast<std::uint32_t>(model::slots::assembly.size());
-  for (std::uint32_t i = first; i + 1 < n; i += 2)
-    a.members.push_back({c.field(entry, i, schema::field_at(k, i)), c.field(entry, i + 1, schema::field_at(k, i + 1))});
-  if (n > first && (n - first) % 2) a.dangling = c.field(entry, n - 1, schema::field_at(k, n - 1));
+  if (n > first) a.members.reserve((n - first) / 2);
+  for (std::uint32_t i = first; i + 1 < n; i += 2) {
+    auto& member = a.members.emplace_back();
+    c.field_into(member.size, entry, i, schema::field_at(k, i));
+    c.field_into(member.ref, entry, i + 1, schema::field_at(k, i + 1));
+  }
+  if (n > first && (n - first) % 2) c.field_into(a.dangling, entry, n - 1, schema::field_at(k, n - 1));
   c.dev.assemblies.push_back(std::move(a));
 }
 

@@ -120,9 +120,12 @@ void lower_enum(context& c, std::uint32_t entry, const schema::keyword_match& m)
   const auto n = c.field_count(entry);
   const auto* text_desc = schema::field_at(*m.desc, 1);
   e.pairs.reserve(n / 2);  // enumerations run to hundreds of pairs of 112 bytes
-  for (std::uint32_t i = 0; i + 1 < n; i += 2)
-    e.pairs.push_back({c.typed(entry, i, type, untyped), c.field(entry, i + 1, text_desc)});
-  if (n % 2) e.dangling = c.typed(entry, n - 1, type, untyped);
+  for (std::uint32_t i = 0; i + 1 < n; i += 2) {
+    auto& pair = e.pairs.emplace_back();
+    c.typed_into(pair.val, entry, i, type, untyped);
+    c.field_into(pair.text, entry, i + 1, text_desc);
+  }
+  if (n % 2) c.typed_into(e.dangling, entry, n - 1, type, untyped);
   c.dev.enums.push_back(std::move(e));
 }
 
