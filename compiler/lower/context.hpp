@@ -58,7 +58,8 @@ struct context {
                   const std::array<model::value T::*, N>& slots, std::uint32_t from, std::uint32_t to,
                   const schema::cip_type_info* typed_as = nullptr, bool untyped = false) {
     for (std::uint32_t i = from; i < to; ++i) {
-      const auto* d = schema::field_at(k, i);
+      // The fixed fields inline; field_at for the repeating tail.
+      const auto* d = i < k.fields.size() ? &k.fields[i] : schema::field_at(k, i);
       if (d && d->type == schema::value_type::typed) typed_into(obj.*slots[i], entry, i, typed_as, untyped);
       else field_into(obj.*slots[i], entry, i, d);
     }
