@@ -33,10 +33,22 @@ namespace edsc::model::decode {
 [[nodiscard]] bool epath(std::string_view text, model::epath& out, std::deque<std::string>& storage);
 
 // Removes the quotes (and L prefix) of one string piece; `closed` false when
-// the closing quote is missing.
-[[nodiscard]] std::string_view piece_body(std::string_view piece, bool& wide);
+// the closing quote is missing. Inline: lowering calls both once per string.
+[[nodiscard]] inline std::string_view piece_body(std::string_view p, bool& wide) {
+  wide = !p.empty() && p.front() == 'L';
+  if (wide) p.remove_prefix(1);
+  if (!p.empty() && p.front() == '"') p.remove_prefix(1);
+  // The closing quote is missing on an unterminated piece; an escaped quote
+  // at the very end is not a closing quote.
+  if (!p.empty() && p.back() == '"') {
+    std::size_t bs = 0;
+    for (std::size_t k = p.size() - 1; k > 0 && p[k - 1] == '\\'; --k) ++bs;
+    if (bs % 2 == 0) p.remove_suffix(1);
+  }
+  return p;
+}
 // Whether a piece body contains a backslash escape.
-[[nodiscard]] bool has_escape(std::string_view body);
+[[nodiscard]] inline bool has_escape(std::string_view body) { return body.find('\\') != std::string_view::npos; }
 // Appends the body with escapes decoded (\uNNNN becomes UTF-8).
 void unescape_append(std::string_view body, std::string& out);
 

@@ -235,22 +235,6 @@ void segments(const std::vector<item>& it, bool packed, model::epath& out, std::
 
 }  // namespace
 
-std::string_view piece_body(std::string_view p, bool& wide) {
-  wide = !p.empty() && p.front() == 'L';
-  if (wide) p.remove_prefix(1);
-  if (!p.empty() && p.front() == '"') p.remove_prefix(1);
-  // The closing quote is missing on an unterminated piece; an escaped quote
-  // at the very end is not a closing quote.
-  if (!p.empty() && p.back() == '"') {
-    std::size_t bs = 0;
-    for (std::size_t k = p.size() - 1; k > 0 && p[k - 1] == '\\'; --k) ++bs;
-    if (bs % 2 == 0) p.remove_suffix(1);
-  }
-  return p;
-}
-
-bool has_escape(std::string_view body) { return body.find('\\') != std::string_view::npos; }
-
 void unescape_append(std::string_view s, std::string& out) {
   for (std::size_t i = 0; i < s.size(); ++i) {
     if (s[i] != '\\' || i + 1 >= s.size()) {
