@@ -15,9 +15,28 @@ namespace edsc::model::decode {
 
 // Integer: decimal with optional sign, or 0x/0X hex. Sets magnitude/negative/
 // hex on `out`; false when the text is not an integer at all.
-[[nodiscard]] bool integer(std::string_view text, value& out);
+[[nodiscard]] bool integer_general(std::string_view text, value& out);
+// The same. Inline for the common case, up to 19 plain digits (which cannot
+// overflow): lowering reads most fields of a file through here.
+[[nodiscard]] inline bool integer(std::string_view text, value& out) {
+  if (text.empty() || text.size() > 19) return integer_general(text, out);
+  std::uint64_t m = 0;
+  for (const char c : text) {
+    const unsigned d = static_cast<unsigned>(static_cast<unsigned char>(c)) - unsigned{'0'};
+    if (d > 9) return integer_general(text, out);  // sign, hex or not a number
+    m = m * 10 + d;
+  }
+  out.magnitude = m;
+  out.negative = false;
+  out.hex = false;
+  return true;
+}
 // Whether an already-read integer fits the CIP type's range.
-[[nodiscard]] bool fits(const value& v, const schema::cip_type_info& type);
+[[nodiscard]] inline bool fits(const value& v, const schema::cip_type_info& t) {
+  // |min| of a signed type is max + 1.
+  if (v.negative) return t.min < 0 && v.magnitude <= t.max + 1;
+  return v.magnitude <= t.max;
+}
 // Real: digits with optional sign, point and exponent (`.004`, `1.5e3`).
 [[nodiscard]] bool real(std::string_view text, double& out);
 

@@ -35,7 +35,7 @@ bool leap(std::uint32_t y) { return (y % 4 == 0 && y % 100 != 0) || y % 400 == 0
 
 }  // namespace
 
-bool integer(std::string_view s, value& out) {
+bool integer_general(std::string_view s, value& out) {
   const char* p = s.data();
   const char* const end = p + s.size();
   bool neg = false;
@@ -64,15 +64,6 @@ bool integer(std::string_view s, value& out) {
   out.negative = neg && m != 0;
   out.hex = hex;
   return true;
-}
-
-bool fits(const value& v, const schema::cip_type_info& t) {
-  if (v.negative) {
-    if (t.min >= 0) return false;
-    // |min| of a signed type is max + 1.
-    return v.magnitude <= t.max + 1;
-  }
-  return v.magnitude <= t.max;
 }
 
 bool real(std::string_view s, double& out) {

@@ -25,6 +25,17 @@ TEST(LowerFastPaths, DecimalIntegersAroundTheUncheckedLength) {
   EXPECT_FALSE(model::decode::integer("1/", v));  // the bytes either side of the digits
   EXPECT_FALSE(model::decode::integer("1:", v));
   EXPECT_FALSE(model::decode::integer("\xB1", v));
+  EXPECT_FALSE(model::decode::integer("", v));
+  ASSERT_TRUE(model::decode::integer("0000000000000000007", v));  // 19 characters, read inline
+  EXPECT_EQ(v.magnitude, 7u);
+  EXPECT_FALSE(v.hex);
+  ASSERT_TRUE(model::decode::integer("-5", v));  // a sign leaves the inline reader
+  EXPECT_EQ(v.as_int(), -5);
+  ASSERT_TRUE(model::decode::integer("5", v));  // and the flags of the last read do not stay
+  EXPECT_FALSE(v.negative);
+  ASSERT_TRUE(model::decode::integer("0x5", v));
+  ASSERT_TRUE(model::decode::integer("6", v));
+  EXPECT_FALSE(v.hex);
   ASSERT_TRUE(model::decode::integer("-0", v));
   EXPECT_FALSE(v.negative);
   ASSERT_TRUE(model::decode::integer("+7", v));
