@@ -79,6 +79,20 @@ struct context {
     if (extra) fill_extra(entry, k, N, *extra);
   }
 
+  // Lowers an entity straight into a new element of `list`: entities hold
+  // dozens of values, and built in a local they would be written twice. On
+  // an exception (out of memory) the half-lowered element is taken out again.
+  template <class T, class F>
+  static void lower_into(std::vector<T>& list, F&& lower) {
+    auto& obj = list.emplace_back();
+    try {
+      lower(obj);
+    } catch (...) {
+      list.pop_back();
+      throw;
+    }
+  }
+
   // Keeps a whole entry in device::unknown.
   void keep_raw(std::uint32_t entry, model::raw_reason why, const schema::keyword_desc* k = nullptr) {
     dev.unknown.push_back({entry, tree.entries[entry].section, tree.text(tree.entries[entry].keyword), why,

@@ -8,9 +8,8 @@ using schema::entry_id;
 
 namespace {
 
-void lower_assem(context& c, std::uint32_t entry, const schema::keyword_match& m) {
+void lower_assem_into(context& c, model::assembly& a, std::uint32_t entry, const schema::keyword_match& m) {
   const auto& k = *m.desc;
-  model::assembly a;
   a.kind = static_cast<model::assembly_kind>(static_cast<int>(k.id) - static_cast<int>(entry_id::assem_n));
   a.number = m.number;
   a.from = c.origin_of(entry, model::none);
@@ -24,7 +23,10 @@ void lower_assem(context& c, std::uint32_t entry, const schema::keyword_match& m
     c.field_into(member.ref, entry, i + 1, schema::field_at(k, i + 1));
   }
   if (n > first && (n - first) % 2) c.field_into(a.dangling, entry, n - 1, schema::field_at(k, n - 1));
-  c.dev.assemblies.push_back(std::move(a));
+}
+
+void lower_assem(context& c, std::uint32_t entry, const schema::keyword_match& m) {
+  context::lower_into(c.dev.assemblies, [&](model::assembly& a) { lower_assem_into(c, a, entry, m); });
 }
 
 void lower_variant(context& c, std::uint32_t entry, const schema::keyword_match& m) {

@@ -8,8 +8,7 @@ using schema::entry_id;
 
 namespace {
 
-// Lowers straight into a new element of device::params: a ParamN is
-// 1.4 KB, which a local and a move would write twice.
+// Into a new element of device::params (a ParamN is 1.4 KB).
 void lower_param_into(context& c, model::param& p, std::uint32_t entry, const schema::keyword_match& m) {
   const auto& k = *m.desc;
   p.number = m.number;
@@ -43,14 +42,7 @@ void lower_param_into(context& c, model::param& p, std::uint32_t entry, const sc
 }
 
 void lower_param(context& c, std::uint32_t entry, const schema::keyword_match& m) {
-  auto& params = c.dev.params;
-  auto& p = params.emplace_back();
-  try {
-    lower_param_into(c, p, entry, m);
-  } catch (...) {
-    params.pop_back();  // out of memory: no half-lowered parameter in the model
-    throw;
-  }
+  context::lower_into(c.dev.params, [&](model::param& p) { lower_param_into(c, p, entry, m); });
 }
 
 void lower_group(context& c, std::uint32_t entry, const schema::keyword_match& m) {
