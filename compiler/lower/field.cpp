@@ -67,16 +67,19 @@ bool try_integer(std::string_view s, std::uint8_t cip, value& v) {
 }
 
 bool try_reference(std::string_view s, schema::ref_mask refs, value& v) {
-  // Rockwell files address one bit of a parameter in assembly members: `Param10:0`.
-  std::string_view name = s;
-  std::uint32_t bit = model::reference::no_bit;
-  if (const auto colon = s.find(':'); colon != std::string_view::npos) {
-    if (!schema::parse_u32(s.substr(colon + 1), bit) || bit >= model::reference::no_bit) return false;
-    name = s.substr(0, colon);
-  }
+  if (refs == 0) return false;
   schema::ref_kind kind{};
   std::uint32_t number = 0;
-  if (refs == 0 || !schema::parse_reference(name, refs, kind, number)) return false;
+  std::uint32_t bit = model::reference::no_bit;
+  // No stem holds a ':', so text that reads as a whole reference has no bit
+  // suffix: the suffix is only looked for when the plain reading fails.
+  if (!schema::parse_reference(s, refs, kind, number)) {
+    // Rockwell files address one bit of a parameter in assembly members: `Param10:0`.
+    const auto colon = s.find(':');
+    if (colon == std::string_view::npos) return false;
+    if (!schema::parse_u32(s.substr(colon + 1), bit) || bit >= model::reference::no_bit) return false;
+    if (!schema::parse_reference(s.substr(0, colon), refs, kind, number)) return false;
+  }
   v.ref = model::reference{};
   v.ref.kind = kind;
   v.ref.number = number;
