@@ -254,14 +254,18 @@ schema::field_desc typed_desc(const schema::cip_type_info& type) {
 // nullptr for a type that is not a row of the type table.
 const schema::field_desc* table_desc(const schema::cip_type_info& type) {
   static constexpr std::uint32_t first = 0xC0, count = 0x20;
+  struct row {
+    const schema::cip_type_info* info = nullptr;
+    schema::field_desc desc;
+  };
   static const auto table = [] {
-    std::array<schema::field_desc, count> t{};
+    std::array<row, count> t{};
     for (std::uint32_t c = 0; c < count; ++c)
-      if (const auto* info = schema::find_type(first + c)) t[c] = typed_desc(*info);
+      if (const auto* info = schema::find_type(first + c)) t[c] = {info, typed_desc(*info)};
     return t;
   }();
   const std::uint32_t i = type.code - first;
-  return i < count && schema::find_type(type.code) == &type ? &table[i] : nullptr;
+  return i < count && table[i].info == &type ? &table[i].desc : nullptr;
 }
 
 }  // namespace
