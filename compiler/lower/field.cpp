@@ -1,5 +1,7 @@
 // Lowering one field: the CST field's syntax (empty / string / bare /
 // dataset) meets the schema's pseudo-type and becomes a typed value.
+#include <array>
+
 #include "lower/context.hpp"
 #include "model/decode.hpp"
 #include "schema/text.hpp"
@@ -65,16 +67,19 @@ bool try_integer(std::string_view s, std::uint8_t cip, value& v) {
 }
 
 bool try_reference(std::string_view s, schema::ref_mask refs, value& v) {
-  // Rockwell files address one bit of a parameter in assembly members: `Param10:0`.
-  std::string_view name = s;
-  std::uint32_t bit = model::reference::no_bit;
-  if (const auto colon = s.find(':'); colon != std::string_view::npos) {
-    if (!schema::parse_u32(s.substr(colon + 1), bit) || bit >= model::reference::no_bit) return false;
-    name = s.substr(0, colon);
-  }
+  if (refs == 0) return false;
   schema::ref_kind kind{};
   std::uint32_t number = 0;
-  if (refs == 0 || !schema::parse_reference(name, refs, kind, number)) return false;
+  std::uint32_t bit = model::reference::no_bit;
+  // No stem holds a ':', so text that reads as a whole reference has no bit
+  // suffix: the suffix is only looked for when the plain reading fails.
+  if (!schema::parse_reference(s, refs, kind, number)) {
+    // Rockwell files address one bit of a parameter in assembly members: `Param10:0`.
+    const auto colon = s.find(':');
+    if (colon == std::string_view::npos) return false;
+    if (!schema::parse_u32(s.substr(colon + 1), bit) || bit >= model::reference::no_bit) return false;
+    if (!schema::parse_reference(s.substr(0, colon), refs, kind, number)) return false;
+  }
   v.ref = model::reference{};
   v.ref.kind = kind;
   v.ref.number = number;
@@ -96,26 +101,19 @@ bool vendor_value(std::string_view s, value& v) {
   return true;
 }
 
-// A bare lexeme under a pseudo-type.
+// A bare lexeme under a pseudo-type. Where an integer may stand it is tried
+// first: it is the common case, and text that reads as an integer (digits,
+// sign, 0x) holds no `_` and no reference stem, so it is never a vendor
+// keyword nor a reference: the order of the tries changes nothing else.
 void lower_bare(std::string_view s, const schema::field_desc& d, value& v) {
   bool lexed = false;
   switch (d.type) {
     case value_type::integer:
-    case value_type::number_ref:
-    case value_type::reference:
-    case value_type::int_or_ref:
-    case value_type::member:
-      if (vendor_value(s, v)) return;
-      break;
-    default: break;
-  }
-  switch (d.type) {
-    case value_type::integer:
-      if (!try_integer(s, d.cip, v)) mark_invalid(v, invalid_reason::not_a_number);
+      if (!try_integer(s, d.cip, v) && !vendor_value(s, v)) mark_invalid(v, invalid_reason::not_a_number);
       return;
     case value_type::number_ref:
       if (!try_integer(s, d.cip, v)) {
-        mark_invalid(v, invalid_reason::not_a_number);
+        if (!vendor_value(s, v)) mark_invalid(v, invalid_reason::not_a_number);
       } else if (v.magnitude != 0 && !v.negative && v.ok()) {  // 0 means "none"
         v.is_ref = true;
         v.ref.number = static_cast<std::uint32_t>(v.magnitude);
@@ -154,11 +152,11 @@ void lower_bare(std::string_view s, const schema::field_desc& d, value& v) {
       return;
     }
     case value_type::reference:
-      if (!try_reference(s, d.refs, v)) mark_invalid(v, invalid_reason::bad_reference);
+      if (!vendor_value(s, v) && !try_reference(s, d.refs, v)) mark_invalid(v, invalid_reason::bad_reference);
       return;
     case value_type::int_or_ref:
     case value_type::member:
-      if (!try_reference(s, d.refs, v) && !try_integer(s, d.cip, v))
+      if (!try_integer(s, d.cip, v) && !vendor_value(s, v) && !try_reference(s, d.refs, v))
         mark_invalid(v, invalid_reason::bad_reference);
       return;
     case value_type::any:
@@ -186,73 +184,113 @@ model::origin context::origin_of(std::uint32_t entry, std::uint32_t index) const
   return {entry, span{at, at}};
 }
 
-value context::field(std::uint32_t entry, std::uint32_t index, const schema::field_desc* desc) {
-  static constexpr schema::field_desc any{"field", value_type::any};
-  const auto& d = desc ? *desc : any;
-  value v;
-  v.allowed = d.refs;
-  // The origin as origin_of gives it, from the one lookup of the field that
-  // lowering it needs anyway (this runs once per field of the file).
-  const auto& e = tree.entries[entry];
-  v.from.entry = entry;
-  if (index >= e.fields_count) {
-    v.from.where = origin_of(entry, index).where;
-    return v;
-  }
-  const auto& f = tree.field_of(e, index);
-  v.from.where = f.where;
-  const auto raw = tree.text(f.where);
+namespace {
+
+// A field with a value: kept out of line so that field_into, which mostly
+// meets empty fields, stays a small leaf without a register-saving prologue.
+[[gnu::noinline]] void lower_value(context& c, const cst::field& f, const schema::field_desc& d, value& v) {
   switch (f.kind) {
     case cst::field_kind::empty:
       break;
     case cst::field_kind::string:
       if (d.type == value_type::epath || d.type == value_type::member) {
-        lower_epath(*this, f, v);
+        lower_epath(c, f, v);
       } else {
-        lower_string(*this, f, v);
+        lower_string(c, f, v);
         if (d.type != value_type::string && d.type != value_type::any) mark_invalid(v, invalid_reason::wrong_kind);
       }
       break;
     case cst::field_kind::dataset:
       v.kind = value_kind::dataset;
-      v.text = raw;
+      v.text = c.tree.text(f.where);
       v.state = value_state::ok;
       if (d.type != value_type::stringi && d.type != value_type::any) mark_invalid(v, invalid_reason::wrong_kind);
       break;
     case cst::field_kind::bare:
-      lower_bare(raw, d, v);
+      lower_bare(c.tree.text(f.where), d, v);
       break;
   }
-  return v;
 }
 
-value context::typed(std::uint32_t entry, std::uint32_t index, const schema::cip_type_info* type, bool untyped) {
-  using schema::type_class;
-  schema::field_desc d{"value", value_type::typed};
-  if (type) {
-    switch (type->cls) {
-      case type_class::signed_int:
-      case type_class::unsigned_int:
-      case type_class::bit_string: d = {"value", value_type::integer, type->code}; break;
-      case type_class::real: d = {"value", value_type::real}; break;
-      case type_class::string: d = {"value", value_type::string}; break;
-      case type_class::epath: d = {"value", value_type::epath}; break;
-      case type_class::stringi: d = {"value", value_type::stringi}; break;
-      case type_class::other: d = {"value", value_type::any}; break;
-    }
+}  // namespace
+
+void context::field_into(value& v, std::uint32_t entry, std::uint32_t index, const schema::field_desc* desc) {
+  static constexpr schema::field_desc any{"field", value_type::any};
+  const auto& d = desc ? *desc : any;
+  if (d.refs != 0) v.allowed = d.refs;  // a fresh value allows none: skip the bit-field write
+  // The origin as origin_of gives it, from the one lookup of the field that
+  // lowering it needs anyway.
+  const auto& e = tree.entries[entry];
+  v.from.entry = entry;
+  if (index >= e.fields_count) {
+    v.from.where = origin_of(entry, index).where;
+    return;
   }
-  value v = field(entry, index, &d);
-  // Without a usable data type nothing can be said about the value: keep
-  // what the syntax gave, but flag it so nobody trusts it as typed.
-  if (!type && !untyped && v.present()) mark_invalid(v, invalid_reason::unknown_type);
-  return v;
+  const auto& f = tree.field_of(e, index);
+  v.from.where = f.where;
+  if (f.kind != cst::field_kind::empty) lower_value(*this, f, d, v);
+}
+
+namespace {
+
+// The descriptor a value of that CIP type is read with.
+schema::field_desc typed_desc(const schema::cip_type_info& type) {
+  using schema::type_class;
+  switch (type.cls) {
+    case type_class::signed_int:
+    case type_class::unsigned_int:
+    case type_class::bit_string: return {"value", value_type::integer, type.code};
+    case type_class::real: return {"value", value_type::real};
+    case type_class::string: return {"value", value_type::string};
+    case type_class::epath: return {"value", value_type::epath};
+    case type_class::stringi: return {"value", value_type::stringi};
+    case type_class::other: break;
+  }
+  return {"value", value_type::any};
+}
+
+// One descriptor per elementary type code, built once: min, max, default
+// and every enumeration value are typed, so they are not rebuilt per value.
+// nullptr for a type that is not a row of the type table.
+const schema::field_desc* table_desc(const schema::cip_type_info& type) {
+  static constexpr std::uint32_t first = 0xC0, count = 0x20;
+  struct row {
+    const schema::cip_type_info* info = nullptr;
+    schema::field_desc desc;
+  };
+  static const auto table = [] {
+    std::array<row, count> t{};
+    for (std::uint32_t c = 0; c < count; ++c)
+      if (const auto* info = schema::find_type(first + c)) t[c] = {info, typed_desc(*info)};
+    return t;
+  }();
+  const std::uint32_t i = type.code - first;
+  return i < count && table[i].info == &type ? &table[i].desc : nullptr;
+}
+
+}  // namespace
+
+void context::typed_into(value& v, std::uint32_t entry, std::uint32_t index, const schema::cip_type_info* type,
+                         bool untyped) {
+  static constexpr schema::field_desc by_syntax{"value", value_type::typed};
+  if (!type) {
+    field_into(v, entry, index, &by_syntax);
+    // Without a usable data type nothing can be said about the value: keep
+    // what the syntax gave, but flag it so nobody trusts it as typed.
+    if (!untyped && v.present()) mark_invalid(v, invalid_reason::unknown_type);
+  } else if (const auto* d = table_desc(*type)) {
+    field_into(v, entry, index, d);
+  } else {
+    const auto own = typed_desc(*type);
+    field_into(v, entry, index, &own);
+  }
 }
 
 std::vector<value> context::all_fields(std::uint32_t entry, const schema::keyword_desc* k) {
   std::vector<value> out;
   const auto n = field_count(entry);
   out.reserve(n);
-  for (std::uint32_t i = 0; i < n; ++i) out.push_back(field(entry, i, k ? schema::field_at(*k, i) : nullptr));
+  for (std::uint32_t i = 0; i < n; ++i) field_into(out.emplace_back(), entry, i, k ? schema::field_at(*k, i) : nullptr);
   return out;
 }
 

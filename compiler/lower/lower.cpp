@@ -107,10 +107,9 @@ void lower_all(lowering::context& c) {
   lowering::build_index(dev);
   dev.enums.reserve(c.deferred_enums.size());
   // EnumN after every ParamN: its values are typed by the parameter.
-  for (const auto e : c.deferred_enums) {
-    const auto* s = schema::find_section("Params");
+  for (const auto& [e, m] : c.deferred_enums) {
     c.section = tree.entries[e].section;
-    lowering::lower_enum(c, e, schema::find_keyword(*s, tree.text(tree.entries[e].keyword)));
+    lowering::lower_enum(c, e, m);
   }
   lowering::build_index(dev);
   lowering::resolve_references(dev);

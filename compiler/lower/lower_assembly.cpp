@@ -8,19 +8,25 @@ using schema::entry_id;
 
 namespace {
 
-void lower_assem(context& c, std::uint32_t entry, const schema::keyword_match& m) {
+void lower_assem_into(context& c, model::assembly& a, std::uint32_t entry, const schema::keyword_match& m) {
   const auto& k = *m.desc;
-  model::assembly a;
   a.kind = static_cast<model::assembly_kind>(static_cast<int>(k.id) - static_cast<int>(entry_id::assem_n));
   a.number = m.number;
   a.from = c.origin_of(entry, model::none);
   c.fill(entry, k, a, model::slots::assembly, nullptr);
   const auto n = c.field_count(entry);
   const std::uint32_t first = static_cast<std::uint32_t>(model::slots::assembly.size());
-  for (std::uint32_t i = first; i + 1 < n; i += 2)
-    a.members.push_back({c.field(entry, i, schema::field_at(k, i)), c.field(entry, i + 1, schema::field_at(k, i + 1))});
-  if (n > first && (n - first) % 2) a.dangling = c.field(entry, n - 1, schema::field_at(k, n - 1));
-  c.dev.assemblies.push_back(std::move(a));
+  if (n > first) a.members.reserve((n - first) / 2);
+  for (std::uint32_t i = first; i + 1 < n; i += 2) {
+    auto& member = a.members.emplace_back();
+    c.field_into(member.size, entry, i, schema::field_at(k, i));
+    c.field_into(member.ref, entry, i + 1, schema::field_at(k, i + 1));
+  }
+  if (n > first && (n - first) % 2) c.field_into(a.dangling, entry, n - 1, schema::field_at(k, n - 1));
+}
+
+void lower_assem(context& c, std::uint32_t entry, const schema::keyword_match& m) {
+  context::lower_into(c.dev.assemblies, [&](model::assembly& a) { lower_assem_into(c, a, entry, m); });
 }
 
 void lower_variant(context& c, std::uint32_t entry, const schema::keyword_match& m) {

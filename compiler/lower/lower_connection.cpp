@@ -12,22 +12,23 @@ void lower_connection(context& c, std::uint32_t entry, const schema::keyword_mat
     case entry_id::connection_n:
     case entry_id::proxy_connection_n:
     case entry_id::proxied_connection_n: {
-      model::connection cn;
-      cn.kind = k.id == entry_id::proxy_connection_n     ? model::connection_kind::proxy
-                : k.id == entry_id::proxied_connection_n ? model::connection_kind::proxied
-                                                         : model::connection_kind::connection;
-      cn.number = m.number;
-      cn.section = c.section;
-      cn.from = c.origin_of(entry, model::none);
-      c.fill(entry, k, cn, model::slots::connection, &cn.extra);
-      // The bit fields are only meaningful when both masks are real DWORDs.
-      if (cn.trigger.is_integer() && cn.params.is_integer()) {
-        cn.decoded = true;
-        cn.tt = model::decode_trigger(static_cast<std::uint32_t>(cn.trigger.magnitude));
-        cn.cp = model::decode_params(static_cast<std::uint32_t>(cn.params.magnitude));
-      }
-      (cn.kind == model::connection_kind::connection ? c.dev.connections : c.dev.proxy_connections)
-          .push_back(std::move(cn));
+      const auto kind = k.id == entry_id::proxy_connection_n     ? model::connection_kind::proxy
+                        : k.id == entry_id::proxied_connection_n ? model::connection_kind::proxied
+                                                                 : model::connection_kind::connection;
+      auto& list = kind == model::connection_kind::connection ? c.dev.connections : c.dev.proxy_connections;
+      context::lower_into(list, [&](model::connection& cn) {
+        cn.kind = kind;
+        cn.number = m.number;
+        cn.section = c.section;
+        cn.from = c.origin_of(entry, model::none);
+        c.fill(entry, k, cn, model::slots::connection, &cn.extra);
+        // The bit fields are only meaningful when both masks are real DWORDs.
+        if (cn.trigger.is_integer() && cn.params.is_integer()) {
+          cn.decoded = true;
+          cn.tt = model::decode_trigger(static_cast<std::uint32_t>(cn.trigger.magnitude));
+          cn.cp = model::decode_params(static_cast<std::uint32_t>(cn.params.magnitude));
+        }
+      });
       return;
     }
     case entry_id::pitns:

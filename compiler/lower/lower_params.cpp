@@ -8,9 +8,9 @@ using schema::entry_id;
 
 namespace {
 
-void lower_param(context& c, std::uint32_t entry, const schema::keyword_match& m) {
+// Into a new element of device::params (a ParamN is 1.4 KB).
+void lower_param_into(context& c, model::param& p, std::uint32_t entry, const schema::keyword_match& m) {
   const auto& k = *m.desc;
-  model::param p;
   p.number = m.number;
   p.from = c.origin_of(entry, model::none);
   switch (k.id) {
@@ -22,22 +22,27 @@ void lower_param(context& c, std::uint32_t entry, const schema::keyword_match& m
   if (p.kind == model::param_kind::constructed_param) {
     // Layout unknown (§3.7.4): every field kept as written.
     p.extra = c.all_fields(entry, &k);
-    c.dev.params.push_back(std::move(p));
     return;
   }
-  // The data type comes first: it types min, max and default.
-  p.data_type = c.field(entry, 4, schema::field_at(k, 4));
+  // The data type (slot 4) comes first: it types min, max and default.
+  constexpr std::uint32_t data_type_slot = 4;
+  c.fill_slots(entry, k, p, model::slots::param, 0, data_type_slot + 1);
   if (p.data_type.is_integer()) p.type = schema::resolve_param_type(p.data_type.magnitude, &p.legacy_type);
   // A proxy parameter without a type (§3.18): its values are plain numbers.
   const bool untyped = p.kind != model::param_kind::param && !p.data_type.present();
-  c.fill(entry, k, p, model::slots::param, &p.extra, p.type, untyped);
+  constexpr auto slots = static_cast<std::uint32_t>(model::slots::param.size());
+  c.fill_slots(entry, k, p, model::slots::param, data_type_slot + 1, slots, p.type, untyped);
+  c.fill_extra(entry, k, slots, p.extra);
   if (p.type && (p.type->cls == schema::type_class::string || p.type->cls == schema::type_class::stringi)) {
     // String parameters give min/max as length limits (EDS_FORMAT.md §3.7.1).
     static constexpr schema::field_desc length{"length", schema::value_type::integer, schema::code::UINT};
     p.min = c.field(entry, 9, &length);
     p.max = c.field(entry, 10, &length);
   }
-  c.dev.params.push_back(std::move(p));
+}
+
+void lower_param(context& c, std::uint32_t entry, const schema::keyword_match& m) {
+  context::lower_into(c.dev.params, [&](model::param& p) { lower_param_into(c, p, entry, m); });
 }
 
 void lower_group(context& c, std::uint32_t entry, const schema::keyword_match& m) {
@@ -83,7 +88,7 @@ void lower_params(context& c, std::uint32_t entry, const schema::keyword_match& 
     case entry_id::constructed_param_n: return lower_param(c, entry, m);
     case entry_id::enum_n:
     case entry_id::proxy_enum_n:
-    case entry_id::proxied_enum_n: c.deferred_enums.push_back(entry); return;
+    case entry_id::proxied_enum_n: c.deferred_enums.push_back({entry, m}); return;
     case entry_id::enum_par_n: return lower_enum_par(c, entry, m);
     case entry_id::group_n: return lower_group(c, entry, m);
     default: return lower_param_class(c, entry, m);
@@ -107,9 +112,12 @@ void lower_enum(context& c, std::uint32_t entry, const schema::keyword_match& m)
   const auto n = c.field_count(entry);
   const auto* text_desc = schema::field_at(*m.desc, 1);
   e.pairs.reserve(n / 2);  // enumerations run to hundreds of pairs of 112 bytes
-  for (std::uint32_t i = 0; i + 1 < n; i += 2)
-    e.pairs.push_back({c.typed(entry, i, type, untyped), c.field(entry, i + 1, text_desc)});
-  if (n % 2) e.dangling = c.typed(entry, n - 1, type, untyped);
+  for (std::uint32_t i = 0; i + 1 < n; i += 2) {
+    auto& pair = e.pairs.emplace_back();
+    c.typed_into(pair.val, entry, i, type, untyped);
+    c.field_into(pair.text, entry, i + 1, text_desc);
+  }
+  if (n % 2) c.typed_into(e.dangling, entry, n - 1, type, untyped);
   c.dev.enums.push_back(std::move(e));
 }
 

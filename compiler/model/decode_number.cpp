@@ -35,25 +35,28 @@ bool leap(std::uint32_t y) { return (y % 4 == 0 && y % 100 != 0) || y % 400 == 0
 
 }  // namespace
 
-bool integer(std::string_view s, value& out) {
-  std::size_t i = 0;
+bool integer_general(std::string_view s, value& out) {
+  const char* p = s.data();
+  const char* const end = p + s.size();
   bool neg = false;
-  if (i < s.size() && (s[i] == '-' || s[i] == '+')) neg = s[i++] == '-';
-  if (i >= s.size()) return false;
+  if (p != end && (*p == '-' || *p == '+')) neg = *p++ == '-';
+  if (p == end) return false;
   std::uint64_t m = 0;
   bool hex = false;
-  if (s.size() - i > 2 && s[i] == '0' && (s[i + 1] == 'x' || s[i + 1] == 'X')) {
+  if (end - p > 2 && p[0] == '0' && (p[1] == 'x' || p[1] == 'X')) {
     hex = true;
-    for (i += 2; i < s.size(); ++i) {
-      const int d = hex_digit(s[i]);
+    for (p += 2; p != end; ++p) {
+      const int d = hex_digit(*p);
       if (d < 0 || (m >> 60) != 0) return false;
       m = (m << 4) | static_cast<std::uint64_t>(d);
     }
   } else {
-    for (; i < s.size(); ++i) {
-      if (!is_digit(s[i])) return false;
-      const auto d = static_cast<std::uint64_t>(s[i] - '0');
-      if (m > (UINT64_MAX - d) / 10) return false;
+    // Up to 19 digits cannot overflow 64 bits: only longer text pays for the check.
+    const bool may_overflow = end - p > 19;
+    for (; p != end; ++p) {
+      const auto d = static_cast<std::uint64_t>(static_cast<unsigned char>(*p) - '0');
+      if (d > 9) return false;
+      if (may_overflow && m > (UINT64_MAX - d) / 10) return false;
       m = m * 10 + d;
     }
   }
@@ -61,15 +64,6 @@ bool integer(std::string_view s, value& out) {
   out.negative = neg && m != 0;
   out.hex = hex;
   return true;
-}
-
-bool fits(const value& v, const schema::cip_type_info& t) {
-  if (v.negative) {
-    if (t.min >= 0) return false;
-    // |min| of a signed type is max + 1.
-    return v.magnitude <= t.max + 1;
-  }
-  return v.magnitude <= t.max;
 }
 
 bool real(std::string_view s, double& out) {

@@ -105,21 +105,31 @@ bool epath(std::string_view s, model::epath& out, std::deque<std::string>& stora
     out.symbolic = true;
     return true;
   }
-  std::vector<item> it;
-  it.reserve(s.size() / 3 + 1);
+  // Scratch kept from call to call (a file has thousands of paths): the items
+  // and both readings reuse their buffers, and the result gets one exact
+  // allocation instead of a vector grown segment by segment.
+  thread_local std::vector<item> it;
+  thread_local model::epath padded, packed;
+  it.clear();
   if (!lex_epath(s, it)) return false;
   // Placeholder words stand inside a path; words alone are not one.
   if (!it.empty() && std::all_of(it.begin(), it.end(), [](const item& x) { return !x.word.empty(); })) return false;
+  const auto reading = [&](model::epath& p, bool pack) -> model::epath& {
+    p.segments.clear();
+    p.byte_count = static_cast<std::uint32_t>(it.size());
+    p.complete = true;
+    p.packed = pack;
+    p.symbolic = false;
+    segments(it, pack, p, storage);
+    return p;
+  };
+  const model::epath* best = &reading(padded, false);
+  if (!clean(padded) && clean(reading(packed, true))) best = &packed;
   out = model::epath{};
-  out.byte_count = static_cast<std::uint32_t>(it.size());
-  segments(it, false, out, storage);
-  if (!clean(out)) {
-    model::epath alt;
-    alt.byte_count = out.byte_count;
-    alt.packed = true;
-    segments(it, true, alt, storage);
-    if (clean(alt)) out = std::move(alt);
-  }
+  out.segments.assign(best->segments.begin(), best->segments.end());
+  out.byte_count = best->byte_count;
+  out.complete = best->complete;
+  out.packed = best->packed;
   return true;
 }
 
@@ -224,22 +234,6 @@ void segments(const std::vector<item>& it, bool packed, model::epath& out, std::
 }
 
 }  // namespace
-
-std::string_view piece_body(std::string_view p, bool& wide) {
-  wide = !p.empty() && p.front() == 'L';
-  if (wide) p.remove_prefix(1);
-  if (!p.empty() && p.front() == '"') p.remove_prefix(1);
-  // The closing quote is missing on an unterminated piece; an escaped quote
-  // at the very end is not a closing quote.
-  if (!p.empty() && p.back() == '"') {
-    std::size_t bs = 0;
-    for (std::size_t k = p.size() - 1; k > 0 && p[k - 1] == '\\'; --k) ++bs;
-    if (bs % 2 == 0) p.remove_suffix(1);
-  }
-  return p;
-}
-
-bool has_escape(std::string_view body) { return body.find('\\') != std::string_view::npos; }
 
 void unescape_append(std::string_view s, std::string& out) {
   for (std::size_t i = 0; i < s.size(); ++i) {
