@@ -270,7 +270,24 @@ struct skipped_text : pg::disable<recover_body> {};
 struct unexpected : pg::disable<recover_body> {};
 
 template <unsigned D> struct dataset;
-template <unsigned D> struct value : pg::sor<string_seq, dataset<D>, bare> {};
+// sor<string_seq, dataset<D>, bare>, choosing by the first bytes: a string
+// starts `"` or `L"`, a dataset `{`, and bare_char excludes both `"` and `{`,
+// so at most one alternative can match and only that one is tried (the sor
+// tried both string rules before every bare value and dataset).
+template <unsigned D> struct value {
+  using rule_t = value;
+  using subs_t = pg::type_list<string_seq, dataset<D>, bare>;
+  template <pg::apply_mode A, pg::rewind_mode M, template <typename...> class Action,
+            template <typename...> class Control, typename ParseInput, typename... States>
+  [[nodiscard]] static bool match(ParseInput& in, States&&... st) {
+    const char* const p = in.current();
+    const std::size_t left = in.size(2);
+    if (left != 0 && (p[0] == '"' || (p[0] == 'L' && left > 1 && p[1] == '"')))
+      return pg::match<string_seq, A, M, Action, Control>(in, st...);
+    if (left != 0 && p[0] == '{') return pg::match<dataset<D>, A, M, Action, Control>(in, st...);
+    return pg::match<bare, A, M, Action, Control>(in, st...);
+  }
+};
 template <unsigned D> struct field : pg::opt<pg::not_at<new_entry_ahead>, value<D>> {};
 
 struct value_start : pg::sor<string_open, pg::one<'{'>, bare_char> {};
