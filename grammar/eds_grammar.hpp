@@ -155,7 +155,9 @@ inline std::size_t trivia_length(const char* const begin, const char* const end)
   const char* p = begin;
   while (p != end) {
     const char c = *p;
-    if (c == ' ' || c == '\t' || c == '\r' || c == '\n') {
+    if (c == ' ' || c == '\t') {
+      p += blank_length(p, end);
+    } else if (is_line_end(c)) {
       ++p;
     } else if (c == '$') {
       p += comment_text_length(p, end);
@@ -166,33 +168,81 @@ inline std::size_t trivia_length(const char* const begin, const char* const end)
   return static_cast<std::size_t>(p - begin);
 }
 
-// star<trivia>. The grammar looks ahead past trivia before most tokens
-// (at<skip, ...>), so skip runs far more often without actions than with:
-// then it is one loop over the bytes; with actions, each blank, newline and
-// comment is matched by its own rule so that it still becomes its own token.
+// Completes a match of Rule that a scanner found to span the next n bytes:
+// what pg::match<Rule> does after Rule::match succeeds (the Control hooks and
+// the action), without handing the bytes to Rule::match a second time.
+template <typename Rule, bool InLine, pg::apply_mode A, template <typename...> class Action,
+          template <typename...> class Control, typename ParseInput, typename... States>
+void take(ParseInput& in, const std::size_t n, States&&... st) {
+  const auto begin = in.iterator();
+  const ParseInput& view = in;
+  Control<Rule>::start(view, st...);
+  if constexpr (InLine)
+    in.bump_in_this_line(n);
+  else
+    in.bump(n);
+  if constexpr (A == pg::apply_mode::action &&
+                requires { Control<Rule>::template apply<Action>(begin, view, st...); })
+    Control<Rule>::template apply<Action>(begin, view, st...);
+  Control<Rule>::success(view, st...);
+}
+
+// star<trivia>. Without actions (lookaheads) it is one loop over the bytes;
+// with actions, each blank, newline and comment still becomes its own token.
 struct skip {
   using rule_t = skip;
   using subs_t = pg::type_list<pg::star<trivia>>;
   template <pg::apply_mode A, pg::rewind_mode M, template <typename...> class Action,
             template <typename...> class Control, typename ParseInput, typename... States>
   [[nodiscard]] static bool match(ParseInput& in, States&&... st) {
+    const char* const end = in.end();
     if constexpr (A == pg::apply_mode::nothing) {
-      in.bump(trivia_length(in.current(), in.end()));
-      return true;
+      in.bump(trivia_length(in.current(), end));
     } else {
       // star<trivia> by the first byte: the three alternatives start with
-      // disjoint bytes, so this is the same language without sor's retries.
-      while (!in.empty()) {
-        switch (in.peek_char()) {
+      // disjoint bytes, so this is the same language without sor's retries;
+      // each is scanned once and then completed by take.
+      for (;;) {
+        const char* const p = in.current();
+        if (p == end) break;
+        switch (*p) {
           case ' ':
-          case '\t': (void)pg::match<blank, A, M, Action, Control>(in, st...); break;
-          case '\r':
-          case '\n': (void)pg::match<newline, A, M, Action, Control>(in, st...); break;
-          case '$': (void)pg::match<comment, A, M, Action, Control>(in, st...); break;
+          case '\t': take<blank, true, A, Action, Control>(in, blank_length(p, end), st...); break;
+          case '\r': take<newline, false, A, Action, Control>(in, p + 1 != end && p[1] == '\n' ? 2 : 1, st...); break;
+          case '\n': take<newline, false, A, Action, Control>(in, 1, st...); break;
+          // `$` is no line end, so the comment text scan from it covers the comment.
+          case '$': take<comment, true, A, Action, Control>(in, comment_text_length(p, end), st...); break;
           default: return true;
         }
       }
+    }
+    return true;
+  }
+};
+
+// seq<at<skip, Ahead>, skip>: looking ahead past trivia and then matching it
+// again scanned every run of trivia twice; here it is scanned once when Ahead
+// fails and, with actions, once more only to emit its tokens.
+template <typename Ahead>
+struct skip_before {
+  using rule_t = skip_before;
+  using subs_t = pg::type_list<skip, Ahead>;
+  template <pg::apply_mode A, pg::rewind_mode M, template <typename...> class Action,
+            template <typename...> class Control, typename ParseInput, typename... States>
+  [[nodiscard]] static bool match(ParseInput& in, States&&... st) {
+    const std::size_t n = trivia_length(in.current(), in.end());
+    {
+      const auto m = in.template mark<pg::rewind_mode::required>();  // at<>: rewinds on leaving
+      in.bump(n);
+      if (!Control<Ahead>::template match<pg::apply_mode::nothing, pg::rewind_mode::active, Action, Control>(in, st...))
+        return false;
+    }
+    if constexpr (A == pg::apply_mode::nothing) {
+      in.bump(n);
       return true;
+    } else {
+      // Mostly nothing precedes a `,` or `;`: then there is no token to emit.
+      return n == 0 || pg::match<skip, A, M, Action, Control>(in, st...);
     }
   }
 };
@@ -217,7 +267,7 @@ struct string_open : pg::seq<pg::opt<pg::one<'L'>>, pg::one<'"'>> {};
 struct string_piece : pg::seq<string_open, string_chars, pg::one<'"'>> {};
 struct unterminated_string : pg::seq<string_open, string_chars, pg::opt<pg::one<'\\'>>> {};
 struct string_token : pg::sor<string_piece, unterminated_string> {};
-struct string_seq : pg::seq<string_token, pg::star<pg::at<skip, string_open>, skip, string_token>> {};
+struct string_seq : pg::seq<string_token, pg::star<skip_before<string_open>, string_token>> {};
 
 // ---- entries --------------------------------------------------------------------
 struct equals : pg::one<'='> {};
@@ -238,7 +288,9 @@ inline std::size_t entry_ahead_length(const char* const begin, const char* const
   if (p == end || !(is_alpha(*p) || *p == '_')) return 0;
   ++p;
   while (p != end && (is_alpha(*p) || is_digit(*p) || *p == '_')) ++p;
-  p += trivia_length(p, end);
+  if (p == end) return 0;
+  // Most words are values followed by `,` or `;`: no trivia scan for them.
+  if (*p != '=') p += trivia_length(p, end);
   if (p == end || *p != '=') return 0;
   return static_cast<std::size_t>(p + 1 - begin);
 }
@@ -293,22 +345,22 @@ template <unsigned D> struct field : pg::opt<pg::not_at<new_entry_ahead>, value<
 struct value_start : pg::sor<string_open, pg::one<'{'>, bare_char> {};
 struct separator_ahead : pg::sor<pg::one<','>, pg::seq<pg::not_at<new_entry_ahead>, value_start>> {};
 struct separator : pg::sor<comma, missing_comma> {};
-template <unsigned D> struct next_field : pg::seq<skip, separator, skip, field<D>> {};
+template <unsigned D> struct next_field : pg::seq<separator, skip, field<D>> {};
 template <unsigned D>
-struct field_list : pg::seq<field<D>, pg::star<pg::at<skip, separator_ahead>, next_field<D>>> {};
+struct field_list : pg::seq<field<D>, pg::star<skip_before<separator_ahead>, next_field<D>>> {};
 
 template <unsigned D>
 struct open_dataset : pg::seq<lbrace, skip, field_list<D + 1>,
-                              pg::sor<pg::seq<pg::at<skip, pg::one<'}'>>, skip, rbrace>, missing_rbrace>> {};
+                              pg::sor<pg::seq<skip_before<pg::one<'}'>>, rbrace>, missing_rbrace>> {};
 struct too_deep_dataset : pg::seq<deep_lbrace, pg::opt<skipped_text>> {};
 template <unsigned D>
 struct dataset : std::conditional_t<(D < max_nesting), open_dataset<D>, too_deep_dataset> {};
 
 struct sync_ahead : pg::sor<new_entry_ahead, pg::one<'['>, pg::eof> {};
-struct entry_end : pg::sor<pg::seq<pg::at<skip, pg::one<';'>>, skip, semicolon>,
+struct entry_end : pg::sor<pg::seq<skip_before<pg::one<';'>>, semicolon>,
                            pg::seq<pg::at<skip, sync_ahead>, missing_semicolon>,
                            pg::seq<skip, unexpected, pg::opt<semicolon>>> {};
-struct entry_body : pg::seq<pg::at<skip, pg::one<'='>>, skip, equals, skip, field_list<0>, entry_end> {};
+struct entry_body : pg::seq<skip_before<pg::one<'='>>, equals, skip, field_list<0>, entry_end> {};
 struct entry_without_equals : pg::seq<missing_equals, pg::opt<skipped_text>, pg::opt<semicolon>> {};
 struct entry : pg::seq<keyword, pg::sor<entry_body, entry_without_equals>> {};
 
