@@ -22,6 +22,7 @@
 // - Less: datasets `{...}` nest at most `max_nesting` deep (STRINGI needs 2).
 // - Less: a string cannot span lines (the format forbids it; use adjacent pieces).
 
+#include <array>
 #include <bit>
 #include <cstdint>
 #include <cstring>
@@ -82,9 +83,24 @@ constexpr bool stop_bare(char c) {
     default: return false;
   }
 }
+// The classes of every byte, so the hot loops test one table entry instead
+// of comparing against each member of a class.
+enum : std::uint8_t { bare_stop_class = 1, word_class = 2 };
+inline constexpr auto byte_classes = [] {
+  std::array<std::uint8_t, 256> t{};
+  for (int c = 0; c < 256; ++c) {
+    const char ch = static_cast<char>(c);
+    if (stop_bare(ch)) t[c] |= bare_stop_class;
+    if ((ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '_')
+      t[c] |= word_class;
+  }
+  return t;
+}();
+constexpr bool in_class(char c, std::uint8_t cls) { return (byte_classes[static_cast<unsigned char>(c)] & cls) != 0; }
+
 inline std::size_t bare_length(const char* const begin, const char* const end) noexcept {
   const char* p = begin;
-  while (p != end && !stop_bare(*p)) ++p;
+  while (p != end && !in_class(*p, bare_stop_class)) ++p;
   return static_cast<std::size_t>(p - begin);
 }
 
@@ -287,7 +303,7 @@ inline std::size_t entry_ahead_length(const char* const begin, const char* const
   while (p != end && is_digit(*p)) ++p;
   if (p == end || !(is_alpha(*p) || *p == '_')) return 0;
   ++p;
-  while (p != end && (is_alpha(*p) || is_digit(*p) || *p == '_')) ++p;
+  while (p != end && in_class(*p, word_class)) ++p;  // identifier_other
   if (p == end) return 0;
   // Most words are values followed by `,` or `;`: no trivia scan for them.
   if (*p != '=') p += trivia_length(p, end);
