@@ -298,6 +298,12 @@ struct keyword : entry_keyword_text {};
 // actions (inside at, not_at and disable), so skip is plain trivia here.
 constexpr bool is_digit(char c) { return c >= '0' && c <= '9'; }
 constexpr bool is_alpha(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+// Past the `=` that follows trivia from p, or nullptr. Out of line: it is
+// rarely needed, and inlined its calls made every lookahead save registers.
+[[gnu::noinline]] inline const char* equals_after_trivia(const char* p, const char* const end) noexcept {
+  p += trivia_length(p, end);
+  return p != end && *p == '=' ? p + 1 : nullptr;
+}
 inline std::size_t entry_ahead_length(const char* const begin, const char* const end) noexcept {
   const char* p = begin;
   while (p != end && is_digit(*p)) ++p;
@@ -305,10 +311,11 @@ inline std::size_t entry_ahead_length(const char* const begin, const char* const
   ++p;
   while (p != end && in_class(*p, word_class)) ++p;  // identifier_other
   if (p == end) return 0;
+  if (*p == '=') return static_cast<std::size_t>(p + 1 - begin);
   // Most words are values followed by `,` or `;`: no trivia scan for them.
-  if (*p != '=') p += trivia_length(p, end);
-  if (p == end || *p != '=') return 0;
-  return static_cast<std::size_t>(p + 1 - begin);
+  if (*p != ' ' && *p != '\t' && *p != '$' && !is_line_end(*p)) return 0;
+  const char* const past = equals_after_trivia(p, end);
+  return past == nullptr ? 0 : static_cast<std::size_t>(past - begin);
 }
 struct new_entry_ahead : scan<entry_ahead_length, true, false> {};  // the trivia may cross line ends
 
