@@ -22,6 +22,7 @@
 // - Less: datasets `{...}` nest at most `max_nesting` deep (STRINGI needs 2).
 // - Less: a string cannot span lines (the format forbids it; use adjacent pieces).
 
+#include <array>
 #include <bit>
 #include <cstdint>
 #include <cstring>
@@ -82,9 +83,24 @@ constexpr bool stop_bare(char c) {
     default: return false;
   }
 }
+// The classes of every byte, so the hot loops test one table entry instead
+// of comparing against each member of a class.
+enum : std::uint8_t { bare_stop_class = 1, word_class = 2 };
+inline constexpr auto byte_classes = [] {
+  std::array<std::uint8_t, 256> t{};
+  for (int c = 0; c < 256; ++c) {
+    const char ch = static_cast<char>(c);
+    if (stop_bare(ch)) t[c] |= bare_stop_class;
+    if ((ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '_')
+      t[c] |= word_class;
+  }
+  return t;
+}();
+constexpr bool in_class(char c, std::uint8_t cls) { return (byte_classes[static_cast<unsigned char>(c)] & cls) != 0; }
+
 inline std::size_t bare_length(const char* const begin, const char* const end) noexcept {
   const char* p = begin;
-  while (p != end && !stop_bare(*p)) ++p;
+  while (p != end && !in_class(*p, bare_stop_class)) ++p;
   return static_cast<std::size_t>(p - begin);
 }
 
@@ -155,7 +171,9 @@ inline std::size_t trivia_length(const char* const begin, const char* const end)
   const char* p = begin;
   while (p != end) {
     const char c = *p;
-    if (c == ' ' || c == '\t' || c == '\r' || c == '\n') {
+    if (c == ' ' || c == '\t') {
+      p += blank_length(p, end);
+    } else if (is_line_end(c)) {
       ++p;
     } else if (c == '$') {
       p += comment_text_length(p, end);
@@ -166,33 +184,81 @@ inline std::size_t trivia_length(const char* const begin, const char* const end)
   return static_cast<std::size_t>(p - begin);
 }
 
-// star<trivia>. The grammar looks ahead past trivia before most tokens
-// (at<skip, ...>), so skip runs far more often without actions than with:
-// then it is one loop over the bytes; with actions, each blank, newline and
-// comment is matched by its own rule so that it still becomes its own token.
+// Completes a match of Rule that a scanner found to span the next n bytes:
+// what pg::match<Rule> does after Rule::match succeeds (the Control hooks and
+// the action), without handing the bytes to Rule::match a second time.
+template <typename Rule, bool InLine, pg::apply_mode A, template <typename...> class Action,
+          template <typename...> class Control, typename ParseInput, typename... States>
+void take(ParseInput& in, const std::size_t n, States&&... st) {
+  const auto begin = in.iterator();
+  const ParseInput& view = in;
+  Control<Rule>::start(view, st...);
+  if constexpr (InLine)
+    in.bump_in_this_line(n);
+  else
+    in.bump(n);
+  if constexpr (A == pg::apply_mode::action &&
+                requires { Control<Rule>::template apply<Action>(begin, view, st...); })
+    Control<Rule>::template apply<Action>(begin, view, st...);
+  Control<Rule>::success(view, st...);
+}
+
+// star<trivia>. Without actions (lookaheads) it is one loop over the bytes;
+// with actions, each blank, newline and comment still becomes its own token.
 struct skip {
   using rule_t = skip;
   using subs_t = pg::type_list<pg::star<trivia>>;
   template <pg::apply_mode A, pg::rewind_mode M, template <typename...> class Action,
             template <typename...> class Control, typename ParseInput, typename... States>
   [[nodiscard]] static bool match(ParseInput& in, States&&... st) {
+    const char* const end = in.end();
     if constexpr (A == pg::apply_mode::nothing) {
-      in.bump(trivia_length(in.current(), in.end()));
-      return true;
+      in.bump(trivia_length(in.current(), end));
     } else {
       // star<trivia> by the first byte: the three alternatives start with
-      // disjoint bytes, so this is the same language without sor's retries.
-      while (!in.empty()) {
-        switch (in.peek_char()) {
+      // disjoint bytes, so this is the same language without sor's retries;
+      // each is scanned once and then completed by take.
+      for (;;) {
+        const char* const p = in.current();
+        if (p == end) break;
+        switch (*p) {
           case ' ':
-          case '\t': (void)pg::match<blank, A, M, Action, Control>(in, st...); break;
-          case '\r':
-          case '\n': (void)pg::match<newline, A, M, Action, Control>(in, st...); break;
-          case '$': (void)pg::match<comment, A, M, Action, Control>(in, st...); break;
+          case '\t': take<blank, true, A, Action, Control>(in, blank_length(p, end), st...); break;
+          case '\r': take<newline, false, A, Action, Control>(in, p + 1 != end && p[1] == '\n' ? 2 : 1, st...); break;
+          case '\n': take<newline, false, A, Action, Control>(in, 1, st...); break;
+          // `$` is no line end, so the comment text scan from it covers the comment.
+          case '$': take<comment, true, A, Action, Control>(in, comment_text_length(p, end), st...); break;
           default: return true;
         }
       }
+    }
+    return true;
+  }
+};
+
+// seq<at<skip, Ahead>, skip>: looking ahead past trivia and then matching it
+// again scanned every run of trivia twice; here it is scanned once when Ahead
+// fails and, with actions, once more only to emit its tokens.
+template <typename Ahead>
+struct skip_before {
+  using rule_t = skip_before;
+  using subs_t = pg::type_list<skip, Ahead>;
+  template <pg::apply_mode A, pg::rewind_mode M, template <typename...> class Action,
+            template <typename...> class Control, typename ParseInput, typename... States>
+  [[nodiscard]] static bool match(ParseInput& in, States&&... st) {
+    const std::size_t n = trivia_length(in.current(), in.end());
+    {
+      const auto m = in.template mark<pg::rewind_mode::required>();  // at<>: rewinds on leaving
+      in.bump(n);
+      if (!Control<Ahead>::template match<pg::apply_mode::nothing, pg::rewind_mode::active, Action, Control>(in, st...))
+        return false;
+    }
+    if constexpr (A == pg::apply_mode::nothing) {
+      in.bump(n);
       return true;
+    } else {
+      // Mostly nothing precedes a `,` or `;`: then there is no token to emit.
+      return n == 0 || pg::match<skip, A, M, Action, Control>(in, st...);
     }
   }
 };
@@ -217,7 +283,7 @@ struct string_open : pg::seq<pg::opt<pg::one<'L'>>, pg::one<'"'>> {};
 struct string_piece : pg::seq<string_open, string_chars, pg::one<'"'>> {};
 struct unterminated_string : pg::seq<string_open, string_chars, pg::opt<pg::one<'\\'>>> {};
 struct string_token : pg::sor<string_piece, unterminated_string> {};
-struct string_seq : pg::seq<string_token, pg::star<pg::at<skip, string_open>, skip, string_token>> {};
+struct string_seq : pg::seq<string_token, pg::star<skip_before<string_open>, string_token>> {};
 
 // ---- entries --------------------------------------------------------------------
 struct equals : pg::one<'='> {};
@@ -232,15 +298,24 @@ struct keyword : entry_keyword_text {};
 // actions (inside at, not_at and disable), so skip is plain trivia here.
 constexpr bool is_digit(char c) { return c >= '0' && c <= '9'; }
 constexpr bool is_alpha(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+// Past the `=` that follows trivia from p, or nullptr. Out of line: it is
+// rarely needed, and inlined its calls made every lookahead save registers.
+[[gnu::noinline]] inline const char* equals_after_trivia(const char* p, const char* const end) noexcept {
+  p += trivia_length(p, end);
+  return p != end && *p == '=' ? p + 1 : nullptr;
+}
 inline std::size_t entry_ahead_length(const char* const begin, const char* const end) noexcept {
   const char* p = begin;
   while (p != end && is_digit(*p)) ++p;
   if (p == end || !(is_alpha(*p) || *p == '_')) return 0;
   ++p;
-  while (p != end && (is_alpha(*p) || is_digit(*p) || *p == '_')) ++p;
-  p += trivia_length(p, end);
-  if (p == end || *p != '=') return 0;
-  return static_cast<std::size_t>(p + 1 - begin);
+  while (p != end && in_class(*p, word_class)) ++p;  // identifier_other
+  if (p == end) return 0;
+  if (*p == '=') return static_cast<std::size_t>(p + 1 - begin);
+  // Most words are values followed by `,` or `;`: no trivia scan for them.
+  if (*p != ' ' && *p != '\t' && *p != '$' && !is_line_end(*p)) return 0;
+  const char* const past = equals_after_trivia(p, end);
+  return past == nullptr ? 0 : static_cast<std::size_t>(past - begin);
 }
 struct new_entry_ahead : scan<entry_ahead_length, true, false> {};  // the trivia may cross line ends
 
@@ -270,28 +345,45 @@ struct skipped_text : pg::disable<recover_body> {};
 struct unexpected : pg::disable<recover_body> {};
 
 template <unsigned D> struct dataset;
-template <unsigned D> struct value : pg::sor<string_seq, dataset<D>, bare> {};
+// sor<string_seq, dataset<D>, bare>, choosing by the first bytes: a string
+// starts `"` or `L"`, a dataset `{`, and bare_char excludes both `"` and `{`,
+// so at most one alternative can match and only that one is tried (the sor
+// tried both string rules before every bare value and dataset).
+template <unsigned D> struct value {
+  using rule_t = value;
+  using subs_t = pg::type_list<string_seq, dataset<D>, bare>;
+  template <pg::apply_mode A, pg::rewind_mode M, template <typename...> class Action,
+            template <typename...> class Control, typename ParseInput, typename... States>
+  [[nodiscard]] static bool match(ParseInput& in, States&&... st) {
+    const char* const p = in.current();
+    const std::size_t left = in.size(2);
+    if (left != 0 && (p[0] == '"' || (p[0] == 'L' && left > 1 && p[1] == '"')))
+      return pg::match<string_seq, A, M, Action, Control>(in, st...);
+    if (left != 0 && p[0] == '{') return pg::match<dataset<D>, A, M, Action, Control>(in, st...);
+    return pg::match<bare, A, M, Action, Control>(in, st...);
+  }
+};
 template <unsigned D> struct field : pg::opt<pg::not_at<new_entry_ahead>, value<D>> {};
 
 struct value_start : pg::sor<string_open, pg::one<'{'>, bare_char> {};
 struct separator_ahead : pg::sor<pg::one<','>, pg::seq<pg::not_at<new_entry_ahead>, value_start>> {};
 struct separator : pg::sor<comma, missing_comma> {};
-template <unsigned D> struct next_field : pg::seq<skip, separator, skip, field<D>> {};
+template <unsigned D> struct next_field : pg::seq<separator, skip, field<D>> {};
 template <unsigned D>
-struct field_list : pg::seq<field<D>, pg::star<pg::at<skip, separator_ahead>, next_field<D>>> {};
+struct field_list : pg::seq<field<D>, pg::star<skip_before<separator_ahead>, next_field<D>>> {};
 
 template <unsigned D>
 struct open_dataset : pg::seq<lbrace, skip, field_list<D + 1>,
-                              pg::sor<pg::seq<pg::at<skip, pg::one<'}'>>, skip, rbrace>, missing_rbrace>> {};
+                              pg::sor<pg::seq<skip_before<pg::one<'}'>>, rbrace>, missing_rbrace>> {};
 struct too_deep_dataset : pg::seq<deep_lbrace, pg::opt<skipped_text>> {};
 template <unsigned D>
 struct dataset : std::conditional_t<(D < max_nesting), open_dataset<D>, too_deep_dataset> {};
 
 struct sync_ahead : pg::sor<new_entry_ahead, pg::one<'['>, pg::eof> {};
-struct entry_end : pg::sor<pg::seq<pg::at<skip, pg::one<';'>>, skip, semicolon>,
+struct entry_end : pg::sor<pg::seq<skip_before<pg::one<';'>>, semicolon>,
                            pg::seq<pg::at<skip, sync_ahead>, missing_semicolon>,
                            pg::seq<skip, unexpected, pg::opt<semicolon>>> {};
-struct entry_body : pg::seq<pg::at<skip, pg::one<'='>>, skip, equals, skip, field_list<0>, entry_end> {};
+struct entry_body : pg::seq<skip_before<pg::one<'='>>, equals, skip, field_list<0>, entry_end> {};
 struct entry_without_equals : pg::seq<missing_equals, pg::opt<skipped_text>, pg::opt<semicolon>> {};
 struct entry : pg::seq<keyword, pg::sor<entry_body, entry_without_equals>> {};
 

@@ -61,7 +61,7 @@ class builder {
   void report(diag_id id, span where, std::string message, const char* insert = nullptr);
   void check_escapes(span s);
   void begin_field();
-  void add_value_token(field_kind kind, std::uint32_t tok);
+  void add_value_token(field_kind kind, std::uint32_t tok, span s);
   void close_frame();
   void close_entry(bool terminated);
   void close_section();

@@ -1,99 +1,14 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
-#include <iterator>
-#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "cst/tokens.hpp"
 #include "source/source_file.hpp"
 
 namespace edsc::cst {
-
-inline constexpr std::uint32_t npos = std::numeric_limits<std::uint32_t>::max();
-
-enum class token_kind : std::uint8_t {
-  blank,         // run of spaces and tabs
-  newline,       // CR, LF or CRLF
-  comment,       // `$` to end of line
-  lbracket,      // `[` of a section header
-  section_name,  // the name between the brackets (trimmed)
-  rbracket,      // `]`
-  keyword,       // entry keyword before `=`
-  equals,
-  comma,
-  semicolon,
-  string,        // one quoted piece, quotes and `L` prefix included
-  bare,          // unquoted value: number, date, reference, keyword...
-  lbrace,
-  rbrace,
-  skipped,       // bytes the parser stepped over while recovering from an error
-};
-
-[[nodiscard]] constexpr bool is_trivia(token_kind k) {
-  return k == token_kind::blank || k == token_kind::newline || k == token_kind::comment;
-}
-
-// Tokens tile the input: token i ends where token i+1 begins, the first starts
-// at 0 and the last ends at the end of the file. That is what makes the tree
-// lossless.
-struct token {
-  span where;
-  token_kind kind;
-};
-
-// The tokens of a file, five bytes each: because they tile the input, a token
-// begins where the previous one ends, so only ends and kinds are stored (the
-// token array would otherwise be the largest part of the tree). Elements are
-// read by value.
-class token_list {
- public:
-  class iterator {
-   public:
-    using iterator_category = std::input_iterator_tag;
-    using value_type = token;
-    using difference_type = std::ptrdiff_t;
-    using pointer = void;
-    using reference = token;
-    iterator(const token_list* l, std::size_t i) : list_(l), i_(i) {}
-    token operator*() const { return (*list_)[i_]; }
-    iterator& operator++() { ++i_; return *this; }
-    iterator operator++(int) { auto old = *this; ++i_; return old; }
-    friend bool operator==(const iterator& a, const iterator& b) { return a.i_ == b.i_; }
-   private:
-    const token_list* list_;
-    std::size_t i_;
-  };
-
-  void reserve(std::size_t n) {
-    ends_.reserve(n);
-    kinds_.reserve(n);
-  }
-  void push_back(token t) {
-    // A token that does not start where the last one ended cannot be stored
-    // faithfully; remember the first such offset for first_structure_violation.
-    if (t.where.begin != end_offset() && gap_ == npos) gap_ = end_offset();
-    ends_.push_back(t.where.end);
-    kinds_.push_back(t.kind);
-  }
-  [[nodiscard]] std::size_t size() const { return ends_.size(); }
-  [[nodiscard]] bool empty() const { return ends_.empty(); }
-  [[nodiscard]] token operator[](std::size_t i) const {
-    return {span{i == 0 ? 0 : ends_[i - 1], ends_[i]}, kinds_[i]};
-  }
-  [[nodiscard]] token back() const { return (*this)[size() - 1]; }
-  [[nodiscard]] iterator begin() const { return {this, 0}; }
-  [[nodiscard]] iterator end() const { return {this, size()}; }
-  // Where the last token ends (0 when there is none).
-  [[nodiscard]] std::uint32_t end_offset() const { return ends_.empty() ? 0 : ends_.back(); }
-  [[nodiscard]] std::uint32_t first_gap() const { return gap_; }
-
- private:
-  std::vector<std::uint32_t> ends_;
-  std::vector<token_kind> kinds_;
-  std::uint32_t gap_ = npos;
-};
 
 enum class field_kind : std::uint8_t { empty, string, bare, dataset };
 

@@ -135,6 +135,24 @@ TEST(Recovery, WideEncodingsAndBinaryFormatsAreOneDiagnostic) {
   EXPECT_FALSE(parse_text("MZ = 1;\n").result.not_text);
 }
 
+// The parser looks past trivia before `,`, `;`, `}` and string pieces and only
+// then takes it: where a token is missing, the trivia after the last value
+// must stay outside the entry and the error must point before it.
+TEST(Recovery, TriviaBeforeAMissingTokenIsTakenOnceAndStaysOutside) {
+  const auto p = parse_text("[S]\nA = { 1 $ one\n  \t\nB = \"x\" $ two\r\n \"y\"  $ three\n;\n");
+  EXPECT_EQ(p.diag_list(), (strings{"syntax-missing-rbrace@2:8", "syntax-missing-semicolon@2:8"}));
+  EXPECT_EQ(p.tokens(), (strings{"lbracket:[", "section-name:S", "rbracket:]", "newline:\n", "keyword:A",
+                                 "blank: ", "equals:=", "blank: ", "lbrace:{", "blank: ", "bare:1", "blank: ",
+                                 "comment:$ one", "newline:\n", "blank:  \t", "newline:\n", "keyword:B",
+                                 "blank: ", "equals:=", "blank: ", "string:\"x\"", "blank: ", "comment:$ two",
+                                 "newline:\r\n", "blank: ", "string:\"y\"", "blank:  ", "comment:$ three",
+                                 "newline:\n", "semicolon:;", "newline:\n"}));
+  EXPECT_EQ(p.text(p.entry("A").where), "A = { 1");
+  EXPECT_EQ(p.fields("A"), strings{"{ 1"});
+  EXPECT_EQ(p.fields("B"), strings{"\"x\" $ two\r\n \"y\""});
+  EXPECT_TRUE(p.entry("B").terminated);
+}
+
 TEST(Recovery, AnAllDigitWordIsStrayNotAKeyword) {
   // Keywords have a letter or '_' (`1_Vendor`); `5 = x;` is one stray line.
   const auto p = parse_text("[S]\n5 = x;\nA = 1;\n");
