@@ -54,7 +54,7 @@ class first_of_name {
         slots_[at] = index;
         return index;
       }
-      if (folded_equal(name_of(slots_[at]), name)) return slots_[at];
+      if (schema::iequals(name_of(slots_[at]), name)) return slots_[at];
     }
   }
 
@@ -62,7 +62,7 @@ class first_of_name {
   static constexpr std::uint32_t empty = 0xFFFFFFFFu;
   static std::size_t folded_hash(std::string_view s) {
     std::uint64_t h = 14695981039346656037ull;  // FNV-1a
-    for (const char c : s) h = (h ^ static_cast<unsigned char>(fold_char(c))) * 1099511628211ull;
+    for (const char c : s) h = (h ^ static_cast<unsigned char>(schema::ascii_lower(c))) * 1099511628211ull;
     return static_cast<std::size_t>(h ^ (h >> 32));
   }
   std::vector<std::uint32_t> slots_;
