@@ -10,6 +10,8 @@
 
 #include <fmt/format.h>
 
+#include "io/pipe.hpp"
+
 namespace edsc::io {
 
 namespace {
@@ -90,6 +92,7 @@ read_result read_source(const std::string& path, std::uint64_t max_bytes) {
 read_result read_stdin(const std::string& name, std::uint64_t max_bytes) {
   const std::string display_name = name.empty() ? default_stdin_name : name;
   std::string text;
+  widen_pipe(STDIN_FILENO);  // an editor piping a large buffer waits less
   // One byte past the limit tells "exactly at the limit" from "over it".
   if (!read_to_end(STDIN_FILENO, text, max_bytes + 1)) return errno_error(display_name, "read standard input");
   if (text.size() > max_bytes) return over_limit(display_name, text.size(), max_bytes, "at least ");

@@ -45,6 +45,8 @@ std::size_t offset_of(const std::string& text, const json& pos) {
 
 }  // namespace
 
+int lsp_process::pipe_capacity(bool to) const { return fcntl(to ? in_ : out_, F_GETPIPE_SZ); }
+
 lsp_process::lsp_process(const std::vector<std::string>& args) {
   int in[2], out[2], err[2];
   if (pipe(in) != 0 || pipe(out) != 0 || pipe(err) != 0) throw std::runtime_error("pipe");

@@ -40,6 +40,9 @@ class lsp_process {
   int wait_exit();
   [[nodiscard]] const std::string& stderr_text();
   int next_id() { return ++last_id_; }
+  // Capacity in bytes of the pipe to the server's input (to: true) or from
+  // its output; -1 when it cannot be read.
+  [[nodiscard]] int pipe_capacity(bool to) const;
 
  private:
   pid_t pid_ = -1;

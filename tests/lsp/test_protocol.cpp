@@ -1,5 +1,7 @@
 // `edsc lsp` driven through pipes by a test client: lifecycle, errors the
 // server must answer and survive, and the document sync.
+#include <cstdio>
+
 #include <gtest/gtest.h>
 
 #include "lsp/lsp_client.hpp"
@@ -24,6 +26,24 @@ TEST(LspProtocol, InitializeAnnouncesCapabilities) {
   EXPECT_EQ(caps["textDocumentSync"]["openClose"], true);
   EXPECT_EQ(caps["documentFormattingProvider"], true);
   EXPECT_EQ(r["result"]["serverInfo"]["name"], "edsc");
+  EXPECT_EQ(p.request("shutdown", nullptr)["result"], nullptr);
+  p.notify("exit", nullptr);
+  EXPECT_EQ(p.wait_exit(), 0);
+}
+
+// A full-text change of a large document fits the pipes in one piece: the
+// server asks for the largest pipes an unprivileged process may have.
+TEST(LspProtocol, WidensItsPipes) {
+  int limit = 0;
+  if (FILE* f = std::fopen("/proc/sys/fs/pipe-max-size", "r")) {
+    if (std::fscanf(f, "%d", &limit) != 1) limit = 0;
+    std::fclose(f);
+  }
+  if (limit < (1 << 20)) GTEST_SKIP() << "fs/pipe-max-size is " << limit << ", below 1 MB";
+  lsp_process p;
+  ASSERT_TRUE(p.initialize().contains("result"));  // the server is running its loop
+  EXPECT_EQ(p.pipe_capacity(true), 1 << 20);
+  EXPECT_EQ(p.pipe_capacity(false), 1 << 20);
   EXPECT_EQ(p.request("shutdown", nullptr)["result"], nullptr);
   p.notify("exit", nullptr);
   EXPECT_EQ(p.wait_exit(), 0);
