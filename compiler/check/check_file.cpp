@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "check/context.hpp"
-#include "io/read_file.hpp"
+#include "io/map_file.hpp"
 #include "lower/lower.hpp"
 #include "parse/parser.hpp"
 
@@ -33,9 +33,10 @@ std::unique_ptr<analysis> analyze(std::unique_ptr<source_file> source, const che
 }
 
 checked_file check_file(const std::string& path, const check_options& options) {
-  checked_file out;
-  auto read = io::read_source(path);
+  // Mapped, not read: `check` is what runs over whole libraries.
+  auto read = io::map_source(path);
   if (auto* err = std::get_if<io::io_error>(&read)) {
+    checked_file out;
     out.io_error = err->message;
     return out;
   }
@@ -45,6 +46,11 @@ checked_file check_file(const std::string& path, const check_options& options) {
 checked_file check_source(std::unique_ptr<source_file> source, const check_options& options) {
   checked_file out;
   auto a = analyze(std::move(source), options);
+  // Zeros stood in for part of the file: what was found is not about it.
+  if (a->source->changed()) {
+    out.io_error = io::changed_while_read(a->source->path()).message;
+    return out;
+  }
   // The source is heap-held, so it outlives the tree and model that point into it.
   out.report.source = std::move(a->source);
   out.report.diags = std::move(a->diags);

@@ -47,7 +47,8 @@ struct checked_file {
 // The whole front end on one file: read, parse, check, then the user's
 // severity policy. Safe to call from several threads at once.
 [[nodiscard]] checked_file check_file(const std::string& path, const check_options& options);
-// The same on bytes already read (standard input).
+// The same on bytes already read (standard input) or mapped: a mapped file
+// that shrank while it was checked is reported as such, with no findings.
 [[nodiscard]] checked_file check_source(std::unique_ptr<source_file> source, const check_options& options);
 
 }  // namespace edsc

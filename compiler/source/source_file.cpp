@@ -12,6 +12,10 @@ source_file::source_file(std::string path, std::string text)
 source_file::source_file(std::string path, std::unique_ptr<char[]> bytes, std::size_t size)
     : path_(std::move(path)), bytes_(std::move(bytes)), view_(bytes_.get(), size) {}
 
+source_file::source_file(std::string path, std::shared_ptr<const void> owner, std::string_view bytes,
+                         const std::atomic<bool>* changed)
+    : path_(std::move(path)), owner_(std::move(owner)), view_(bytes), changed_(changed) {}
+
 void source_file::index_lines() const {
   std::call_once(indexed_, [this] { line_starts_ = line_starts(view_); });
 }
