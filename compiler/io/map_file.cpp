@@ -52,7 +52,7 @@ void on_sigbus(int sig, siginfo_t* info, void* context) {
     break;
   }
   // Not a mapped input: what SIGBUS did before (a sanitizer's report, or
-  // the default action once the access is made again).
+  // the default action: raised again, it is delivered on return).
   if ((previous_sigbus.sa_flags & SA_SIGINFO) != 0 && previous_sigbus.sa_sigaction != nullptr) {
     previous_sigbus.sa_sigaction(sig, info, context);
     return;
@@ -63,6 +63,7 @@ void on_sigbus(int sig, siginfo_t* info, void* context) {
     return;
   }
   ::signal(SIGBUS, SIG_DFL);
+  ::raise(sig);
 }
 
 bool install_handler() {
