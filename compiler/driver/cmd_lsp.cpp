@@ -70,7 +70,8 @@ int run_lsp(const lsp_cli& cli) {
   ::signal(SIGPIPE, SIG_IGN);
   // A full-text change carries the whole document: through the default
   // 64 kB pipe a 441 kB file took a dozen wake-ups of client and server
-  // (scripts/bench-lsp: 5.0 -> 4.4 ms a change, docs/performance.md).
+  // (scripts/bench-lsp medians 4.3-6.6 -> 3.4-4.4 ms a change,
+  // docs/performance.md).
   io::widen_pipe(STDIN_FILENO);
   io::widen_pipe(STDOUT_FILENO);
   bool output_ok = true;

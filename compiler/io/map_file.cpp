@@ -1,10 +1,8 @@
 #include "io/map_file.hpp"
 
 #include <atomic>
-#include <cerrno>
 #include <csignal>
 #include <cstdint>
-#include <cstring>
 #include <mutex>
 
 #include <fcntl.h>

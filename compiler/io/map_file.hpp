@@ -2,7 +2,8 @@
 // Mapping an input instead of reading it: the page cache's pages are used in
 // place, with no copy and no fresh pages to fault in (about 2 µs a page on
 // the reference machine). The largest corpus file is ready in 0.05 ms
-// instead of 0.25-0.5 ms; a folder of 18 MB saves 4 400 page faults.
+// instead of 0.25-0.5 ms, and 16 400 of the 64 MB file's 78 200 page faults
+// go (docs/performance.md, fifth round).
 //
 // A mapped file that another process truncates meanwhile raises SIGBUS when
 // the vanished pages are touched. edsc does not die of that: a handler puts
