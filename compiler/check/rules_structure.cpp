@@ -1,13 +1,12 @@
 // Syntax-level rules over the tree: duplicate sections and entries, vendor
 // prefixes (EDS_FORMAT.md §7 rules 3 and 5).
-#include <string>
-#include <unordered_map>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "check/context.hpp"
-#include "check/names.hpp"
+#include "schema/text.hpp"
 
 namespace edsc {
 
@@ -34,9 +33,9 @@ void check_vendor_prefix(const check_context& ctx, span where, std::string_view 
 }
 
 // The first of the names seen so far that folds equal to a new one: an open
-// addressing table of indices, reused section after section. A map of
-// folded copies cost a node and a string per entry, the largest part of
-// this rule.
+// addressing table of indices, for the section names and, reused section
+// after section, for the keywords. A map of folded copies cost a node and a
+// string per entry, the largest part of this rule.
 class first_of_name {
  public:
   void reset(std::size_t names) {
@@ -72,15 +71,15 @@ class first_of_name {
 
 void check_structure(const check_context& ctx) {
   const auto& t = ctx.tree;
-  std::unordered_map<std::string, std::uint32_t> sections;
-  first_of_name keywords;
+  first_of_name sections, keywords;
+  sections.reset(t.sections.size());
   for (std::uint32_t si = 0; si < t.sections.size(); ++si) {
     const auto& s = t.sections[si];
     if (!s.header_ok) continue;
     check_vendor_prefix(ctx, s.name, "section");
-    const auto [it, fresh] = sections.emplace(fold_name(t.text(s.name)), si);
-    if (!fresh) {
-      const auto& first = t.sections[it->second];
+    const auto first_index = sections.insert(t.text(s.name), si, [&](std::uint32_t i) { return t.text(t.sections[i].name); });
+    if (first_index != si) {
+      const auto& first = t.sections[first_index];
       ctx.report_with_note(diag_id::duplicate_section, s.name,
                            fmt::format("section [{}] appears more than once", t.text(s.name)), first.name,
                            "first defined here");
