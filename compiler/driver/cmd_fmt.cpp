@@ -1,7 +1,6 @@
 #include <memory>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include "diag/render_text.hpp"
 #include "driver/choice.hpp"
@@ -48,7 +47,7 @@ int run_fmt(const fmt_options& opt) {
   }
   // Layout only: a formatted file that means something else is a bug, and
   // is never written.
-  if (*out != input && !edit::same_meaning(edit::meaning_of(*edit::analyze(src.path(), *out)), edit::meaning_of(*a))) {
+  if (*out != input && !edit::means_the_same(*a, src.path(), *out)) {
     print_error(fmt::format("{}: internal error: formatting would change the file's meaning; nothing written",
                             src.path()));
     return exit_failure;

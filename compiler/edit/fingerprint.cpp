@@ -139,6 +139,10 @@ bool same_meaning(const nlohmann::ordered_json& a, const nlohmann::ordered_json&
   }
 }
 
+bool means_the_same(const analysis& a, const std::string& path, const std::string& text) {
+  return same_meaning(meaning_of(*analyze(path, text)), meaning_of(a));
+}
+
 std::string model_fingerprint(const std::string& path, const std::string& text) {
   return meaning_of(*analyze(path, text)).dump();
 }

@@ -19,6 +19,10 @@ namespace edsc::edit {
 // the same order.
 [[nodiscard]] bool same_meaning(const nlohmann::ordered_json& a, const nlohmann::ordered_json& b);
 
+// Whether `text`, read as the file at `path`, means what `a` does: fmt's
+// and the language server's check of a formatted file against its input.
+[[nodiscard]] bool means_the_same(const analysis& a, const std::string& path, const std::string& text);
+
 // The meaning of `text`, serialised.
 [[nodiscard]] std::string model_fingerprint(const std::string& path, const std::string& text);
 

@@ -1,5 +1,4 @@
 // textDocument/formatting: the layout of `edsc fmt`, as one edit.
-#include "edit/analyze.hpp"
 #include "edit/fingerprint.hpp"
 #include "edit/format.hpp"
 #include "lsp/convert.hpp"
@@ -18,7 +17,7 @@ json on_formatting(session& s, const json& params) {
   const std::string_view before = d.analysed->text();
   if (*out == before) return json::array();
   // Layout only: an edit that changes the meaning is a bug and is withheld.
-  if (!edit::same_meaning(edit::meaning_of(*edit::analyze(d.path, *out)), edit::meaning_of(*d.analysed)))
+  if (!edit::means_the_same(*d.analysed, d.path, *out))
     throw rpc_error(error_code::internal_error, "edsc fmt: formatting would change the file's meaning");
   return json::array({minimal_edit(d, *out)});
 }
