@@ -10,7 +10,9 @@ source_file::source_file(std::string path, std::string text)
     : path_(std::move(path)), text_(std::move(text)), view_(text_) {}
 
 source_file::source_file(std::string path, std::unique_ptr<char[]> bytes, std::size_t size)
-    : path_(std::move(path)), bytes_(std::move(bytes)), view_(bytes_.get(), size) {}
+    : path_(std::move(path)), view_(bytes.get(), size) {
+  owner_ = std::shared_ptr<const char[]>(std::move(bytes));
+}
 
 source_file::source_file(std::string path, std::shared_ptr<const void> owner, std::string_view bytes,
                          const std::atomic<bool>* changed)

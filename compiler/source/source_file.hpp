@@ -49,10 +49,9 @@ class source_file {
   void index_lines() const;
 
   std::string path_;
-  std::string text_;               // one of these three holds the bytes
-  std::unique_ptr<char[]> bytes_;
-  std::shared_ptr<const void> owner_;  // or the owner of a mapping
-  std::string_view view_;          // of whichever does
+  std::string text_;                   // holds the bytes,
+  std::shared_ptr<const void> owner_;  // or owns what holds them (a buffer, a mapping)
+  std::string_view view_;              // of whichever does
   const std::atomic<bool>* changed_ = nullptr;
   mutable std::once_flag indexed_;
   mutable std::vector<std::uint32_t> line_starts_;
