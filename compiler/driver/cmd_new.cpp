@@ -122,7 +122,7 @@ void register_new(CLI::App& app, command_action& run) {
   add("--output-bytes", &edit::device_spec::output, "Output bytes (consumed by the device)");
   // The spelling before --input-bytes, kept for scripts (hidden). The old
   // --output N became -o's long form, which every other command uses.
-  add("--input", &edit::device_spec::input, "")->group("")->excludes(input);
+  auto* old_input = add("--input", &edit::device_spec::input, "")->group("");
   add("--connections", &edit::device_spec::connections,
       "DeviceNet connections, first is the default: poll,strobe,cos,cyclic")
       ->delimiter(',');
@@ -134,9 +134,19 @@ void register_new(CLI::App& app, command_action& run) {
   add("--time", &edit::device_spec::time, "Creation time hh:mm:ss (default: 00:00:00 with --date, else now)");
   add_choice(cmd, "--eol", opt->eol, {"lf", "crlf"}, "Line endings (default: lf)");
   auto* output = cmd->add_option("-o,--output", opt->output, "Write the file here ('-': standard output, the default)");
-  cmd->add_option("--output-file", opt->output)->group("")->excludes(output);  // -o's old long form (hidden)
+  auto* old_output = cmd->add_option("--output-file", opt->output)->group("");  // -o's old long form (hidden)
   cmd->add_flag("--force", opt->force, "Write even when the result has errors");
-  cmd->callback([&run, opt, fields, vendor, type, code, name, from] {
+  struct spelling {
+    CLI::Option *old_option, *option;
+    const char *old_name, *name;
+  };
+  const std::vector<spelling> renamed{{old_input, input, "--input", "--input-bytes"},
+                                      {old_output, output, "--output-file", "-o/--output"}};
+  cmd->callback([&run, opt, fields, renamed, vendor, type, code, name, from] {
+    // Both spellings at once would leave one of the two values unused.
+    for (const auto& r : renamed)
+      if (r.old_option->count() > 0 && r.option->count() > 0)
+        throw CLI::ValidationError(fmt::format("{} is the old spelling of {}: give one of them", r.old_name, r.name));
     if (from->count() == 0) {
       for (auto* o : {vendor, type, code, name})
         if (o->count() == 0) throw CLI::RequiredError(o->get_name() + " (or --from)");

@@ -106,11 +106,12 @@ TEST_F(NewOptions, RequiredKeysMayComeFromTheCommandLine) {
 TEST_F(NewOptions, AnOptionAndItsOldSpellingAreRefusedTogether) {
   auto r = make({"--input", "5"});  // make() gives --input-bytes too
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("--input"), std::string::npos) << r.err;
+  EXPECT_EQ(options_in(r.err), (std::set<std::string>{"--input", "--input-bytes"})) << r.err;
   EXPECT_EQ(r.out, "");
   const auto out = (dir_ / "a.eds").string(), other = (dir_ / "b.eds").string();
   r = make({"-o", out, "--output-file", other});
   EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(options_in(r.err), (std::set<std::string>{"--output", "--output-file"})) << r.err;
   EXPECT_FALSE(fs::exists(out));
   EXPECT_FALSE(fs::exists(other));
 }
