@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "source/utf8.hpp"
+
 namespace edsc {
 
 namespace {
@@ -17,17 +19,6 @@ const char* colour_of(severity s) {
     case severity::note: return "\033[1;36m";
   }
   return "";
-}
-
-// Length of a valid UTF-8 sequence starting at p, or 0.
-std::size_t utf8_length(std::string_view s, std::size_t i) {
-  const auto c = static_cast<unsigned char>(s[i]);
-  std::size_t n = c >= 0xF0 && c <= 0xF4 ? 4 : c >= 0xE0 ? 3 : c >= 0xC2 && c < 0xE0 ? 2 : 0;
-  if (n == 0 || i + n > s.size()) return 0;
-  for (std::size_t k = 1; k < n; ++k) {
-    if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return 0;
-  }
-  return n;
 }
 
 // The source line made safe for a terminal, with the display column at which
@@ -53,7 +44,7 @@ shown_line show(std::string_view bytes) {
       out.text.push_back(static_cast<char>(c));
       ++col;
       ++i;
-    } else if (const auto n = c >= 0x80 ? utf8_length(bytes, i) : 0; n > 0) {
+    } else if (const auto n = c >= 0x80 ? utf8::sequence_length(bytes, i) : 0; n > 0) {
       out.text.append(bytes.substr(i, n));
       for (std::size_t k = 1; k < n; ++k) out.column.push_back(col);
       ++col;
@@ -82,8 +73,10 @@ void render_location(const source_file& src, span where, severity level, std::st
 
   const auto line = src.line_text(pos.line);
   const std::uint32_t caret = pos.column - 1;
-  const std::uint32_t first = caret > window_bytes ? caret - window_bytes : 0;
-  const std::uint32_t last = std::min<std::uint32_t>(static_cast<std::uint32_t>(line.size()), caret + window_bytes);
+  // The window of a long line ends between characters, never inside one.
+  const auto whole = [&](std::uint32_t end) { return static_cast<std::uint32_t>(utf8::cut(line, end).size()); };
+  const std::uint32_t first = caret > window_bytes ? whole(caret - window_bytes) : 0;
+  const std::uint32_t last = whole(std::min<std::uint32_t>(static_cast<std::uint32_t>(line.size()), caret + window_bytes));
   const auto shown = show(line.substr(first, last - first));
   const std::string prefix = first > 0 ? "..." : "";
   const std::string suffix = last < line.size() ? "..." : "";

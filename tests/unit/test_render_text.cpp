@@ -47,4 +47,18 @@ TEST(render_text, long_lines_are_cut_to_a_window) {
   EXPECT_NE(out.find("..."), std::string::npos);
 }
 
+TEST(render_text, long_lines_are_cut_between_characters) {
+  for (const std::size_t pad : {0u, 1u}) {
+    std::string text = "[A]\nX = " + std::string(pad, 'a');
+    for (int i = 0; i < 300; ++i) text += "\xC3\xA9";
+    text += " =;\n";
+    const edsc::source_file src("a.eds", text);
+    const auto at = static_cast<std::uint32_t>(text.find(" ="));
+    auto d = edsc::make_diagnostic(edsc::diag_id::syntax_unexpected, {at + 1, at + 2}, "m");
+    const auto out = render(src, d);
+    EXPECT_EQ(out.find("<C3>"), std::string::npos) << out;
+    EXPECT_EQ(out.find("<A9>"), std::string::npos) << out;
+  }
+}
+
 }  // namespace
