@@ -10,6 +10,7 @@
 // - More: any escape after a backslash parses; undefined escapes and `\u`
 //   outside L"..." are reported as errors afterwards, so the string still
 //   round-trips byte for byte.
+// - More: a UTF-8 byte-order mark before the first byte of the text.
 // - More: error productions. A missing `;`, `=`, `,` or `}` and stray text are
 //   recognised, reported and stepped over (resynchronising at the next `;`,
 //   `[` or line that starts `Keyword =`), so one run reports every error.
@@ -394,6 +395,9 @@ struct item_start : pg::sor<pg::one<' ', '\t', '\r', '\n', '$', '['>, entry_keyw
 // since the usual cause is a comment that lost its `$`.
 struct stray : pg::seq<pg::plus<pg::not_at<item_start>, pg::any>, pg::star<pg::not_one<'\r', '\n', '$'>>> {};
 struct item : pg::sor<trivia, section_header, entry, stray> {};
-struct file : pg::seq<pg::star<item>, pg::eof> {};
+// A UTF-8 byte-order mark opens the file at most: what Windows editors save
+// first, and what C compilers accept there. Elsewhere it is stray text.
+struct bom : pg::string<'\xEF', '\xBB', '\xBF'> {};
+struct file : pg::seq<pg::opt<bom>, pg::star<item>, pg::eof> {};
 
 }  // namespace edsc::grammar

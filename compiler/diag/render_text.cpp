@@ -72,6 +72,7 @@ void render_location(const source_file& src, span where, severity level, std::st
   out += '\n';
 
   const auto line = src.line_text(pos.line);
+  const auto line_offset = static_cast<std::uint32_t>(line.data() - src.text().data());
   const std::uint32_t caret = pos.column - 1;
   // The window of a long line ends between characters, never inside one.
   const auto whole = [&](std::uint32_t end) { return static_cast<std::uint32_t>(utf8::cut(line, end).size()); };
@@ -89,8 +90,10 @@ void render_location(const source_file& src, span where, severity level, std::st
     return static_cast<std::uint32_t>(prefix.size()) + shown.column[std::min<std::size_t>(i, shown.column.size() - 1)];
   };
   const std::uint32_t start = column_at(caret);
-  const auto line_end_offset = where.begin - caret + static_cast<std::uint32_t>(line.size());
-  const std::uint32_t span_end_col = caret + (std::min(where.end, line_end_offset) - where.begin);
+  // A span may start in a byte-order mark, which no line shows.
+  const std::uint32_t begin = std::max(where.begin, line_offset);
+  const auto line_end_offset = line_offset + static_cast<std::uint32_t>(line.size());
+  const std::uint32_t span_end_col = caret + (std::clamp(where.end, begin, line_end_offset) - begin);
   const std::uint32_t stop = std::max(start + 1, column_at(span_end_col));
   out += blank_gutter + "| " + (style.color ? "\033[1;32m" : "") + std::string(start, ' ') + '^' +
          std::string(stop - start - 1, '~') + reset + '\n';
