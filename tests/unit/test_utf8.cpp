@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "cip/device_reply.hpp"
 #include "source/utf8.hpp"
 
 namespace {
@@ -46,6 +47,18 @@ TEST(utf8, byte_order_mark) {
   EXPECT_EQ(utf8::bom_length("\xEF\xBB\xBF[File]"), 3u);
   EXPECT_EQ(utf8::bom_length("\xEF\xBB"), 0u);
   EXPECT_EQ(utf8::bom_length("[File]\xEF\xBB\xBF"), 0u);
+}
+
+// Identity attribute 7 on the wire (ListIdentity, Get_Attributes_All): a
+// SHORT_STRING of at most 32 bytes, never ending inside a character.
+TEST(utf8, identity_product_name_on_the_wire_is_cut_whole) {
+  edsc::cip::identity id;
+  id.product_name = std::string(31, 'a') + "\xC3\xA9";
+  edsc::cip::bytes b;
+  edsc::cip::put_identity_fields(b, id);
+  ASSERT_EQ(b.size(), 14u + 1u + 31u);
+  EXPECT_EQ(b[14], 31u);
+  EXPECT_EQ(b.back(), static_cast<std::uint8_t>('a'));
 }
 
 }  // namespace
