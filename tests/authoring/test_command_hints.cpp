@@ -1,0 +1,59 @@
+// What the authoring commands tell a user to run next, and where they point:
+// a command that is suggested does what it is suggested for, and a location
+// names the text it quotes.
+#include "authoring_support.hpp"
+
+namespace authoring {
+namespace {
+
+class Hints : public scratch_test {};
+
+const std::string head =
+    "[File]\n        DescText = \"t\"; CreateDate = 07-30-2005; CreateTime = 12:00:00; Revision = 1.0;\n"
+    "        HomeURL = \"http://example.com\";\n"
+    "[Device]\n        VendCode = 1; VendName = \"v\"; ProdType = 7; ProdTypeStr = \"t\"; ProdCode = 1;\n"
+    "        MajRev = 1; MinRev = 1; ProdName = \"p\";\n";
+
+TEST_F(Hints, FixIsSuggestedOnlyWhenItRepairsSomething) {
+  // A stray word has no fix-it: `edsc fix` would change nothing.
+  const auto stray = file("stray.eds", head + "        !oops\n");
+  for (const auto& cmd : std::vector<std::vector<std::string>>{{"fmt", stray.string()},
+                                                               {"diff", stray.string(), stray.string()}}) {
+    const auto r = edsc(cmd);
+    EXPECT_EQ(r.status, cmd[0] == "fmt" ? 1 : 2) << r.output;
+    EXPECT_NE(r.output.find("syntax-stray"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("edsc fix"), std::string::npos) << r.output;
+  }
+  // A missing ';' has one, and fix does repair it.
+  const auto semi = file("semi.eds", head + "[Device Classification]\n        Class1 = EtherNetIP\n");
+  for (const auto& cmd : std::vector<std::vector<std::string>>{{"fmt", semi.string()},
+                                                               {"diff", semi.string(), semi.string()}}) {
+    const auto r = edsc(cmd);
+    EXPECT_NE(r.output.find("edsc fix"), std::string::npos) << r.output;
+  }
+  EXPECT_EQ(edsc({"fix", "--in-place", semi.string()}).status, 0);
+  EXPECT_EQ(edsc({"fmt", semi.string()}).status, 0);
+  // Both kinds at once: fix repairs part of it, and says so.
+  const auto both = file("both.eds", head + "        oops\n[Device Classification]\n        Class1 = EtherNetIP\n");
+  const auto r = edsc({"fmt", both.string()});
+  EXPECT_NE(r.output.find("edsc fix repairs 1 of them"), std::string::npos) << r.output;
+}
+
+TEST_F(Hints, FmtCheckSuggestsTheLineEndingsItChecked) {
+  const auto lf = file("lf.eds", head);
+  auto r = edsc({"fmt", "--check", "--eol", "crlf", lf.string()});
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find("edsc fmt --in-place --eol crlf " + lf.string() + " formats it"), std::string::npos)
+      << r.output;
+  // The suggested command does make the file pass the same check.
+  EXPECT_EQ(edsc({"fmt", "--in-place", "--eol", "crlf", lf.string()}).status, 0);
+  r = edsc({"fmt", "--check", "--eol", "crlf", lf.string()});
+  EXPECT_EQ(r.status, 0) << r.output;
+  // Without --eol the suggestion has none.
+  const auto other = file("other.eds", "[File]\n    DescText = \"t\";\n");
+  r = edsc({"fmt", "--check", other.string()});
+  EXPECT_NE(r.output.find("(edsc fmt --in-place " + other.string() + " formats it)"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace authoring
