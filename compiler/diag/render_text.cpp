@@ -59,13 +59,13 @@ shown_line show(std::string_view bytes) {
   return out;
 }
 
-void render_location(const source_file& src, span where, severity level, std::string_view message,
-                     std::string_view id, const std::vector<fixit>& fixits, const text_style& style,
-                     std::string& out) {
+void render_location(const source_file& src, std::string_view path, span where, severity level,
+                     std::string_view message, std::string_view id, const std::vector<fixit>& fixits,
+                     const text_style& style, std::string& out) {
   const auto pos = src.position(where.begin);
   const char* bold = style.color ? "\033[1m" : "";
   const char* reset = style.color ? "\033[0m" : "";
-  out += fmt::format("{}{}:{}:{}: {}{}:{} {}{}", bold, src.path(), pos.line, pos.column,
+  out += fmt::format("{}{}:{}:{}: {}{}:{} {}{}", bold, path, pos.line, pos.column,
                      style.color ? colour_of(level) : "", to_string(level), reset, bold, message);
   if (!id.empty()) out += fmt::format(" [{}]", id);
   out += reset;
@@ -107,9 +107,15 @@ void render_location(const source_file& src, span where, severity level, std::st
 
 }  // namespace
 
+void render_text(const source_file& src, std::string_view shown_path, const diagnostic& d, const text_style& style,
+                 std::string& out) {
+  render_location(src, shown_path, d.where, d.level, d.message, rule_of(d.id).name, d.fixits, style, out);
+  for (const auto& n : d.notes)
+    render_location(src, shown_path, n.where, severity::note, n.message, {}, {}, style, out);
+}
+
 void render_text(const source_file& src, const diagnostic& d, const text_style& style, std::string& out) {
-  render_location(src, d.where, d.level, d.message, rule_of(d.id).name, d.fixits, style, out);
-  for (const auto& n : d.notes) render_location(src, n.where, severity::note, n.message, {}, {}, style, out);
+  render_text(src, src.path(), d, style, out);
 }
 
 }  // namespace edsc

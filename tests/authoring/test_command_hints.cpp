@@ -1,6 +1,8 @@
 // What the authoring commands tell a user to run next, and where they point:
 // a command that is suggested does what it is suggested for, and a location
 // names the text it quotes.
+#include <regex>
+
 #include "authoring_support.hpp"
 
 namespace authoring {
@@ -53,6 +55,62 @@ TEST_F(Hints, FmtCheckSuggestsTheLineEndingsItChecked) {
   const auto other = file("other.eds", "[File]\n    DescText = \"t\";\n");
   r = edsc({"fmt", "--check", other.string()});
   EXPECT_NE(r.output.find("(edsc fmt --in-place " + other.string() + " formats it)"), std::string::npos) << r.output;
+}
+
+// path:line:col of the first finding in `output`, and the quoted line under it.
+struct located {
+  std::string path;
+  int line = 0;
+  std::string quoted;
+};
+located first_finding(const std::string& output) {
+  std::smatch m;
+  located l;
+  if (std::regex_search(output, m, std::regex(R"(([^\n]+):(\d+):\d+: (?:error|warning|note): [^\n]*\n +\d+ \| ([^\n]*))")))
+    l = {m[1].str(), std::stoi(m[2].str()), m[3].str()};
+  return l;
+}
+
+std::string line_of(const std::string& text, int n) {
+  std::size_t at = 0;
+  for (int i = 1; i < n; ++i) at = text.find('\n', at) + 1;
+  return text.substr(at, text.find('\n', at) - at);
+}
+
+TEST_F(Hints, EditFindingsNameTheTextTheyQuote) {
+  const auto in = file("in.eds", head);
+  const auto out = dir_ / "out.eds";
+  // The removed entry moves MajRev up a line: the finding about it is in the
+  // edited text, which is the output's, not the input's.
+  auto r = edsc({"edit", in.string(), "--remove-entry", "File.HomeURL", "--set", "Device.MajRev=0", "-o", out.string()});
+  EXPECT_EQ(r.status, 0) << r.output;
+  auto f = first_finding(r.output);
+  EXPECT_EQ(f.path, out.string()) << r.output;
+  EXPECT_EQ(f.quoted, "        MajRev = 0; MinRev = 1; ProdName = \"p\";") << r.output;
+  EXPECT_EQ(line_of(read_bytes(out), f.line), f.quoted) << r.output;
+
+  r = edsc({"edit", in.string(), "--remove-entry", "File.HomeURL", "--set", "Device.MajRev=0", "--in-place"});
+  EXPECT_EQ(r.status, 0) << r.output;
+  f = first_finding(r.output);
+  EXPECT_EQ(f.path, in.string()) << r.output;
+  EXPECT_EQ(line_of(read_bytes(in), f.line), f.quoted) << r.output;
+
+  r = edsc({"edit", file("third.eds", head).string(), "--set", "Device.MajRev=0"});
+  EXPECT_EQ(first_finding(r.output).path, "<stdout>") << r.output;
+}
+
+TEST_F(Hints, FixFindingsLeftNameTheRepairedText) {
+  // The inserted ';' moves the rest of its line: what is left is located in
+  // the repaired text.
+  auto text = head;
+  text.replace(text.find("MajRev = 1;"), 11, "MajRev = 1");
+  text.replace(text.find("\"p\""), 3, "\"A product name longer than thirty-two bytes\"");
+  const auto in = file("in.eds", text + "[Device Classification]\n        Class1 = EtherNetIP;\n");
+  const auto out = dir_ / "out.eds";
+  const auto r = edsc({"fix", in.string(), "-o", out.string()});
+  const auto f = first_finding(r.output.substr(r.output.find("fixed:")));
+  EXPECT_EQ(f.path, out.string()) << r.output;
+  EXPECT_EQ(line_of(read_bytes(out), f.line), f.quoted) << r.output;
 }
 
 }  // namespace
