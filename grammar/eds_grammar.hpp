@@ -271,8 +271,17 @@ struct lbracket : pg::one<'['> {};
 struct rbracket : pg::one<']'> {};
 struct section_name : name_text {};
 struct good_header : pg::seq<lbracket, pg::opt<blank>, section_name, pg::opt<blank>, rbracket> {};
-// Stops at `$` too: a comment after a broken header stays a comment.
-struct bad_header_body : pg::star<pg::not_one<']', '\r', '\n', '$'>> {};
+// Runs to the last `]` before the line end or a `$` (a comment after a
+// broken header stays a comment), so `[[Foo]]` is one malformed header, not
+// a header and a stray `]`; without a `]`, to the line end or the `$`.
+inline std::size_t bad_header_body_length(const char* const begin, const char* const end) noexcept {
+  const char* close = nullptr;
+  const char* p = begin;
+  for (; p != end && !is_line_end(*p) && *p != '$'; ++p)
+    if (*p == ']') close = p;
+  return static_cast<std::size_t>((close != nullptr ? close : p) - begin);
+}
+struct bad_header_body : scan<bad_header_body_length, false> {};
 struct bad_header : pg::seq<lbracket, bad_header_body, pg::opt<rbracket>> {};
 struct section_header : pg::sor<pg::seq<pg::at<good_header>, good_header>, bad_header> {};
 

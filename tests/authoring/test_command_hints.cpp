@@ -113,5 +113,21 @@ TEST_F(Hints, FixFindingsLeftNameTheRepairedText) {
   EXPECT_EQ(line_of(read_bytes(out), f.line), f.quoted) << r.output;
 }
 
+TEST_F(Hints, ADoubledBracketHeaderIsOneFindingWhereItStands) {
+  const auto in = file("in.eds", head + "[[Foo]]\n        Bar = 1;\n");
+  const auto r = edsc({"check", in.string(), "--color", "never"});
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_EQ(r.output.find("unknown section"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("syntax-stray"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("in.eds:7:2: error: invalid section name; names are letters, digits, single spaces and "
+                          "'_' '.' '/' '\\' '-', found '[' [syntax-section-header]"),
+            std::string::npos)
+      << r.output;
+  // Neither does any other malformed header add a section named nothing.
+  const auto more = file("more.eds", head + "[Fo$o]\n[ ]\n[Foo\n[A*]\n");
+  const auto m = edsc({"check", more.string(), "--color", "never"});
+  EXPECT_EQ(m.output.find("unknown section"), std::string::npos) << m.output;
+}
+
 }  // namespace
 }  // namespace authoring
