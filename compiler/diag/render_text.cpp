@@ -75,7 +75,7 @@ void render_location(const source_file& src, std::string_view path, span where, 
   const auto line_offset = static_cast<std::uint32_t>(line.data() - src.text().data());
   const std::uint32_t caret = pos.column - 1;
   // The window of a long line ends between characters, never inside one.
-  const auto whole = [&](std::uint32_t end) { return static_cast<std::uint32_t>(utf8::cut(line, end).size()); };
+  const auto whole = [&](std::uint32_t end) { return static_cast<std::uint32_t>(utf8::boundary_before(line, end)); };
   const std::uint32_t first = caret > window_bytes ? whole(caret - window_bytes) : 0;
   const std::uint32_t last = whole(std::min<std::uint32_t>(static_cast<std::uint32_t>(line.size()), caret + window_bytes));
   const auto shown = show(line.substr(first, last - first));

@@ -61,4 +61,14 @@ std::string_view cut(std::string_view s, std::size_t max_bytes) {
   return s.substr(0, end);
 }
 
+std::size_t boundary_before(std::string_view s, std::size_t at) {
+  // A sequence is at most four bytes: its lead is one to three bytes back.
+  for (std::size_t back = 1; back <= 3 && back <= at && at < s.size(); ++back) {
+    const auto n = sequence_length(s, at - back);
+    if (n > back) return at - back;  // the sequence there runs past `at`
+    if (n != 0) break;               // one ends at or before `at`
+  }
+  return at;
+}
+
 }  // namespace edsc::utf8

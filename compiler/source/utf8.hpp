@@ -33,4 +33,10 @@ inline constexpr std::string_view bom = "\xEF\xBB\xBF";
 // a character.
 [[nodiscard]] std::string_view cut(std::string_view s, std::size_t max_bytes);
 
+// `at`, or the start of the well-formed sequence that holds byte `at`: where
+// a window of a line may begin or end, looking at a few bytes only (a line
+// may be megabytes long), as a terminal shows each well-formed sequence as
+// one character even among other bytes.
+[[nodiscard]] std::size_t boundary_before(std::string_view s, std::size_t at);
+
 }  // namespace edsc::utf8

@@ -43,6 +43,20 @@ TEST(utf8, cuts_never_split_a_character) {
   EXPECT_EQ(utf8::cut(std::string(31, 'a') + "\xE9\xE9", 32), std::string(31, 'a') + "\xE9");
 }
 
+TEST(utf8, boundaries_look_at_the_bytes_around_only) {
+  const std::string s = "a\xC3\xA9" "b\xE2\x82\xAC" "c";  // a e-acute b euro c
+  EXPECT_EQ(utf8::boundary_before(s, 1), 1u);
+  EXPECT_EQ(utf8::boundary_before(s, 2), 1u);  // inside the e-acute
+  EXPECT_EQ(utf8::boundary_before(s, 3), 3u);
+  EXPECT_EQ(utf8::boundary_before(s, 5), 4u);  // inside the euro
+  EXPECT_EQ(utf8::boundary_before(s, 6), 4u);
+  EXPECT_EQ(utf8::boundary_before(s, 7), 7u);
+  EXPECT_EQ(utf8::boundary_before(s, 8), 8u);  // the end
+  // Bytes that are no sequence are a character each.
+  EXPECT_EQ(utf8::boundary_before("a\xA9\xA9", 2), 2u);
+  EXPECT_EQ(utf8::boundary_before("\xE9t\xE9", 1), 1u);
+}
+
 TEST(utf8, byte_order_mark) {
   EXPECT_EQ(utf8::bom_length("\xEF\xBB\xBF[File]"), 3u);
   EXPECT_EQ(utf8::bom_length("\xEF\xBB"), 0u);
