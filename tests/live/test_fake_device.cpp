@@ -123,7 +123,9 @@ void fake_device(int s, const std::atomic<bool>& stop, quirks q) {
   }
 }
 
-TEST(live_fake_device, wrong_frames_are_found_at_the_connection) {
+class live_fake_device : public loopback_test {};
+
+TEST_F(live_fake_device, wrong_frames_are_found_at_the_connection) {
   loopback_server device([](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {}); });
   const auto eds = std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds";
   const auto r = run_edsc("verify --live " + device.address() + " " + quoted(eds) + " --connections --color never");
@@ -136,7 +138,7 @@ TEST(live_fake_device, wrong_frames_are_found_at_the_connection) {
 
 // A size in one byte is no size: verify --live says so in words instead of
 // reading a byte past the reply, and checks nothing of that assembly.
-TEST(live_fake_device, verify_takes_an_assembly_size_of_one_byte_for_no_size) {
+TEST_F(live_fake_device, verify_takes_an_assembly_size_of_one_byte_for_no_size) {
   loopback_server device([](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {.one_byte_sizes = true}); });
   const auto eds = std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds";
   const auto r = run_edsc("verify --live " + device.address() + " " + quoted(eds) + " --color never");
@@ -150,7 +152,7 @@ TEST(live_fake_device, verify_takes_an_assembly_size_of_one_byte_for_no_size) {
 // the configuration's size and instance (Assem151: 10 bytes, instance 151);
 // one for a path (0x012A) with the instances of Connection1's path
 // (20 04 24 97 2C 96 2C 64).
-TEST(live_fake_device, a_refusal_is_told_with_the_eds_values_it_concerns) {
+TEST_F(live_fake_device, a_refusal_is_told_with_the_eds_values_it_concerns) {
   const auto eds = std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds";
   for (const auto& [ext, words] :
        {std::pair<std::uint16_t, const char*>{0x0129, "refused the 10 bytes of configuration the EDS gives instance 151"},
@@ -166,7 +168,7 @@ TEST(live_fake_device, a_refusal_is_told_with_the_eds_values_it_concerns) {
 }
 
 // A Forward_Close refused after the frames is said at the connection.
-TEST(live_fake_device, a_refused_forward_close_is_said) {
+TEST_F(live_fake_device, a_refused_forward_close_is_said) {
   loopback_server device([](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {.close_refused = true}); });
   const auto eds = std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds";
   const auto r = run_edsc("verify --live " + device.address() + " " + quoted(eds) + " --connections --color never");
@@ -221,7 +223,7 @@ void probe_device(int s, const std::atomic<bool>& stop, probe_quirks q) {
   }
 }
 
-TEST(live_fake_device, probe_skips_an_assembly_size_of_one_byte) {
+TEST_F(live_fake_device, probe_skips_an_assembly_size_of_one_byte) {
   loopback_server device([](int s, const std::atomic<bool>& stop) { probe_device(s, stop, {}); });
   const auto r = run_edsc("probe " + device.address() + " --timeout 2");
   EXPECT_EQ(r.status, 0) << r.output;
@@ -230,7 +232,7 @@ TEST(live_fake_device, probe_skips_an_assembly_size_of_one_byte) {
 }
 
 // Max Instance 513 (01 02: 0x0201) is more than the 512 instances a probe reads.
-TEST(live_fake_device, probe_reads_max_instance_in_two_bytes) {
+TEST_F(live_fake_device, probe_reads_max_instance_in_two_bytes) {
   loopback_server device([](int s, const std::atomic<bool>& stop) { probe_device(s, stop, {.max_instance = 513}); });
   const auto r = run_edsc("probe " + device.address() + " --timeout 2");
   EXPECT_EQ(r.status, 0) << r.output;
@@ -239,7 +241,7 @@ TEST(live_fake_device, probe_reads_max_instance_in_two_bytes) {
 
 // The device hangs up while its assembly sizes are read: the probe ends
 // there with the network failure in words (exit 2), the reply it waited for.
-TEST(live_fake_device, probe_stops_where_the_device_hangs_up) {
+TEST_F(live_fake_device, probe_stops_where_the_device_hangs_up) {
   loopback_server device([](int s, const std::atomic<bool>& stop) { probe_device(s, stop, {.hang_up_at = 2}); });
   const auto r = run_edsc("probe " + device.address() + " --timeout 2");
   EXPECT_EQ(r.status, 2) << r.output;
@@ -252,7 +254,8 @@ TEST(live_fake_device, probe_stops_where_the_device_hangs_up) {
 // behind: the upload fails in these tests.
 auto refused_upload(probe_quirks q) {
   loopback_server device([q](int s, const std::atomic<bool>& stop) { probe_device(s, stop, q); });
-  const auto out = (std::filesystem::temp_directory_path() / "edsc-refused-upload.eds").string();
+  const auto out =
+      (std::filesystem::temp_directory_path() / ("edsc-refused-upload-" + std::to_string(::getpid()) + ".eds")).string();
   std::filesystem::remove(out);
   auto r = run_edsc("probe " + device.address() + " --timeout 2 --upload-eds " + quoted(out));
   EXPECT_EQ(r.status, 2) << r.output;
@@ -262,7 +265,7 @@ auto refused_upload(probe_quirks q) {
 
 // Packet type 5 is none of first (0), middle (1), last (2), first and last
 // (4): the upload stops at transfer 1, the first that has it.
-TEST(live_fake_device, an_upload_packet_of_type_5_is_out_of_turn) {
+TEST_F(live_fake_device, an_upload_packet_of_type_5_is_out_of_turn) {
   const auto r = refused_upload({.typed_transfers = true});
   EXPECT_NE(r.output.find("upload of the EDS from the device: Upload_Transfer 1: packet type 5 out of turn"),
             std::string::npos)
@@ -271,7 +274,7 @@ TEST(live_fake_device, an_upload_packet_of_type_5_is_out_of_turn) {
 
 // An Upload_Transfer reply of one byte has no packet type: the upload stops
 // at it in words (exit 2) instead of reading the type past the reply.
-TEST(live_fake_device, an_upload_transfer_of_one_byte_is_no_packet) {
+TEST_F(live_fake_device, an_upload_transfer_of_one_byte_is_no_packet) {
   const auto r = refused_upload({});
   EXPECT_NE(r.output.find("upload of the EDS from the device: Upload_Transfer 0 answered another transfer"),
             std::string::npos)
