@@ -76,6 +76,9 @@ int run_verify_live(const verify_live_cli& live, const std::string& eds, const s
   totals.add(reports.front().diags);
   print_reports(reports, totals, format, color, fmt::format("{} against {}", live.host, eds),
                 "\n" + live::render_rows(verdict.rows) + "\n");
+  // A busy device is no finding about the EDS, but the run is incomplete.
+  for (const auto& b : verdict.busy) print_error(fmt::format("{} is busy: {}", live.host, b));
+  if (!verdict.busy.empty()) return exit_failure;
   return totals.errors > 0 ? exit_findings : exit_ok;
 }
 

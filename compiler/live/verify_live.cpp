@@ -68,15 +68,20 @@ struct checker {
              fmt::format("the device reports revision {}, the EDS says {}: exact and compatible keying both "
                          "refuse a different major revision",
                          dev_rev, eds_rev));
+      } else if (min > id.minor) {
+        // Compatible keying accepts a device at least as new as the key: not this one.
+        row("MinRev", eds_rev, dev_rev, verdict::mismatch);
+        diag(diag_id::live_identity, d.min_rev.from.where,
+             fmt::format("the device reports revision {}, the EDS says {}: exact keying refuses it, compatible "
+                         "keying refuses it too (the device's minor revision is older): a scanner keyed from this "
+                         "file keeps the device off line",
+                         dev_rev, eds_rev));
       } else if (min != id.minor) {
-        const bool compatible = id.minor >= min;
         row("MinRev", eds_rev, dev_rev, verdict::mismatch);
         diag(diag_id::live_minor_revision, d.min_rev.from.where,
              fmt::format("the device reports revision {}, the EDS says {}: exact keying refuses it, compatible "
-                         "keying {}",
-                         dev_rev, eds_rev,
-                         compatible ? "accepts it (the device's minor revision is newer)"
-                                    : "refuses it too (the device's minor revision is older)"));
+                         "keying accepts it (the device's minor revision is newer)",
+                         dev_rev, eds_rev));
       } else {
         row("MajRev/MinRev", eds_rev, dev_rev, verdict::match);
       }
@@ -96,6 +101,18 @@ struct checker {
 
   std::string assem_name(const model::assembly& a) { return fmt::format("Assem{}", a.number); }
 
+  // Whether the device answers for the Assembly class itself (its Max
+  // Instance): then an instance it calls unknown is certainly not there.
+  std::optional<bool> assembly_class;
+  result<bool> assembly_class_answers(session& s) {
+    if (!assembly_class) {
+      auto r = s.request(cip::service::get_attribute_single, cip::logical_path(0x04, 0, 2));
+      if (auto* e = failed(r)) return *e;
+      assembly_class = std::get<cip::reply>(r).general == 0;
+    }
+    return *assembly_class;
+  }
+
   // Attribute 4 of each assembly instance the EDS locates.
   std::optional<net_error> assemblies(session& s) {
     for (const auto& t : plan_assemblies(dev)) {
@@ -104,6 +121,18 @@ struct checker {
       if (auto* e = failed(r)) return *e;
       const auto& rep = std::get<cip::reply>(r);
       const auto where = at(t.assem->size, t.assem->from);
+      // 0x05 path destination unknown (OpENer's answer), 0x16 object does not exist.
+      if (rep.general == 0x05 || rep.general == 0x16) {
+        auto known = assembly_class_answers(s);
+        if (auto* e = failed(known)) return *e;
+        if (std::get<bool>(known)) {
+          row(check, std::to_string(t.eds_size), "no such instance", verdict::mismatch);
+          diag(diag_id::live_assembly_missing, t.named_at,
+               fmt::format("the device has no assembly instance {} ({}), which {} says it has", t.instance,
+                           cip::describe_status(rep.general, rep.additional), assem_name(*t.assem)));
+          continue;
+        }
+      }
       if (rep.general != 0 || rep.data.size() < 2) {
         const auto why = rep.general != 0 ? cip::describe_status(rep.general, rep.additional)
                                           : std::string("a reply without the size");
@@ -170,6 +199,18 @@ struct checker {
     return status;
   }
 
+  // A refusal that is the device's state, not the EDS's fault: another
+  // scanner holds what the connection needs.
+  static const char* busy_reason(std::uint8_t general, std::uint16_t ext) {
+    if (general != 0x01) return nullptr;
+    switch (ext) {
+      case 0x0100: return "a connection with the same identity is already open";
+      case 0x0106: return "another scanner owns what it connects to";
+      case 0x0113: return "the device has no connection free";
+      default: return nullptr;
+    }
+  }
+
   std::optional<net_error> connections(session& s) {
     std::uint16_t serial = static_cast<std::uint16_t>(0x4500 + (::getpid() & 0xFF));
     for (const auto& p : plan_connections(dev)) {
@@ -189,6 +230,13 @@ struct checker {
       const auto& o = std::get<connection_outcome>(r);
       if (!o.opened) {
         const auto ext = o.general == 0x01 && !o.additional.empty() ? o.additional[0] : 0;
+        if (const auto* why = busy_reason(o.general, ext)) {
+          row(name, sizes, fmt::format("busy 0x{:02X}/0x{:04X}", o.general, ext), verdict::not_tried);
+          out.busy.push_back(fmt::format("{} not checked: the device refused it with {}: {}; that says nothing "
+                                         "of the EDS",
+                                         name, cip::describe_status(o.general, o.additional), why));
+          continue;
+        }
         row(name, sizes, fmt::format("refused 0x{:02X}/0x{:04X}", o.general, ext), verdict::mismatch);
         diag(diag_id::live_connection_refused, refusal_site(p, ext),
              fmt::format("{} refused: {}", name, refusal_words(p, o)));
@@ -264,7 +312,7 @@ std::string_view to_string(verdict v) {
 
 live_report verify_live(const endpoint& device, const model::device& dev, const live_options& opt) {
   live_report out;
-  checker ck{dev, opt, out, std::nullopt};
+  checker ck{dev, opt, out, std::nullopt, std::nullopt};
   auto opened = session::open(device, opt.timeout);
   if (auto* e = failed(opened)) {
     out.failure = *e;

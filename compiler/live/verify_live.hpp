@@ -34,6 +34,9 @@ struct live_report {
   diagnostics diags;
   std::vector<check_row> rows;
   std::optional<net_error> failure;  // the device could not be talked to: exit 2
+  // Connections the device refused for a reason of its own, not of the EDS
+  // (another scanner owns them, no connection free), in words: exit 2.
+  std::vector<std::string> busy;
 };
 
 [[nodiscard]] live_report verify_live(const endpoint& device, const model::device& dev, const live_options& opt);

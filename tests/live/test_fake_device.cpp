@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <thread>
 
 #include <fmt/format.h>
@@ -69,6 +70,8 @@ struct quirks {
   bool one_byte_sizes = false;       // an Assembly size in one byte where it takes two
   std::uint16_t open_refused = 0;    // Forward_Open refused: 0x01 with this extended status
   bool close_refused = false;        // Forward_Close refused: 0x01
+  std::uint8_t missing_instance = 0; // Assembly attribute 4 of it: 0x05 path destination unknown
+  bool no_assembly_class = false;    // the class (instance 0) answers 0x05 too
 };
 
 // One client's requests, answered as OpENer would, but for the frames and `q`.
@@ -91,10 +94,13 @@ void fake_device(int s, const std::atomic<bool>& stop, quirks q) {
     cip::bytes answer;
     if (service == 0x01) {  // Identity attributes 1-7 of OpENer
       answer = cip_reply(service, unhex("01 00 0C 00 E9 FD 02 03 30 00 15 CD 5B 07 09 4F 70 45 4E 65 72 20 50 43"));
-    } else if (service == 0x0E && request.size() >= 6) {  // Assembly attribute 4
+    } else if (service == 0x0E && request.size() >= 6) {  // Assembly attribute 4 (and the class's Max Instance)
       const auto instance = request[5];
       const std::uint8_t size = instance == 151 ? 10 : 32;
-      answer = cip_reply(service, q.one_byte_sizes ? cip::bytes{size} : cip::bytes{size, 0});
+      if ((instance != 0 && instance == q.missing_instance) || (instance == 0 && q.no_assembly_class))
+        answer = cip_reply(service, {}, 0x05);
+      else
+        answer = cip_reply(service, q.one_byte_sizes ? cip::bytes{size} : cip::bytes{size, 0});
     } else if (service == 0x54 && q.open_refused != 0) {
       answer = {static_cast<std::uint8_t>(service | 0x80), 0, 0x01, 1};
       cip::put_u16(answer, q.open_refused);
@@ -173,6 +179,62 @@ TEST_F(live_fake_device, a_refused_forward_close_is_said) {
   const auto eds = std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds";
   const auto r = run_edsc("verify --live " + device.address() + " " + quoted(eds) + " --connections --color never");
   EXPECT_NE(r.output.find("Connection1: Forward_Close refused: 0x01"), std::string::npos) << r.output;
+}
+
+const std::string opener_eds = std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds";
+
+// The 1-based number of the first line of `path` holding `needle`.
+unsigned line_of(const std::string& path, const std::string& needle) {
+  std::ifstream in(path);
+  std::string line;
+  for (unsigned n = 1; std::getline(in, line); ++n)
+    if (line.find(needle) != std::string::npos) return n;
+  return 0;
+}
+
+// An assembly instance the device calls unknown (0x05) while its Assembly
+// class answers is an error where the EDS gives the instance: Assem151 has
+// no path of its own, Connection1's path names instance 151 (2C 97... as
+// configuration 24 97). When the class does not answer either, nothing is
+// certain: a note, as for any size the device does not give.
+TEST_F(live_fake_device, an_assembly_instance_the_device_lacks_is_an_error_at_its_path) {
+  loopback_server device([](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {.missing_instance = 151}); });
+  const auto r = run_edsc("verify --live " + device.address() + " " + quoted(opener_eds) + " --color never");
+  EXPECT_EQ(r.status, 1) << r.output;
+  const auto where = fmt::format("{}:{}:", opener_eds, line_of(opener_eds, "\"20 04 24 97 2C 96 2C 64\""));
+  const auto at = r.output.find(where);
+  ASSERT_NE(at, std::string::npos) << where << "\n" << r.output;
+  EXPECT_NE(r.output.find("error: the device has no assembly instance 151 (0x05 path destination unknown), which "
+                          "Assem151 says it has [live-assembly-missing]",
+                          at),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("no such instance"), std::string::npos) << r.output;
+
+  loopback_server classless(
+      [](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {.missing_instance = 151, .no_assembly_class = true}); });
+  const auto n = run_edsc("verify --live " + classless.address() + " " + quoted(opener_eds) + " --color never");
+  EXPECT_EQ(n.status, 0) << n.output;
+  EXPECT_NE(n.output.find("Assem151: the device does not give the size of assembly instance 151 (0x05 path "
+                          "destination unknown) [live-not-checked]"),
+            std::string::npos)
+      << n.output;
+}
+
+// A refusal for the device's own state (another scanner owns the outputs)
+// says nothing of the EDS: no diagnostic, a message that the device is
+// busy, exit 2; the other connections are still checked.
+TEST_F(live_fake_device, an_ownership_conflict_is_a_busy_device_not_an_eds_error) {
+  loopback_server device([](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {.open_refused = 0x0106}); });
+  const auto r = run_edsc("verify --live " + device.address() + " " + quoted(opener_eds) + " --connections --color never");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_EQ(r.output.find("[live-connection-refused]"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("0 errors"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("is busy: Connection1 not checked: the device refused it with 0x01 connection failure, "
+                          "extended 0x0106 ownership conflict: another scanner owns what it connects to"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("busy 0x01/0x0106"), std::string::npos) << r.output;
 }
 
 // What `edsc probe` asks, answered: OpENer's identity, ListServices, the

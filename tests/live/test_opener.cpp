@@ -14,6 +14,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cip/connection_manager.hpp"
+#include "cip/message.hpp"
+#include "live/session.hpp"
+#include "netns/live_support.hpp"
 #include "netns/run_edsc.hpp"
 #include "netns/test_network.hpp"
 #include "test_paths.hpp"
@@ -171,6 +175,9 @@ const fault faults[] = {
      "refused the 12 bytes of configuration"},
     {"assembly_size", "Assembly.Assem100.size=16", "16,", "Assem100", "holds 32 bytes on the device, Assem100 says 16"},
     {"minor_revision_newer", "Device.MinRev=4", "MinRev = 4", "", "compatible keying refuses it too"},
+    // Assem100 gets a path of its own naming instance 101, which OpENer lacks (0x05).
+    {"assembly_missing", "Assembly.Assem100.path=\"20 04 24 65 30 03\"", "20 04 24 65 30 03", "Assem100",
+     "the device has no assembly instance 101 (0x05 path destination unknown), which Assem100 says it has"},
     {"minor_revision_refused", "Device.MinRev=4", "MinRev = 4", "", "0x0116 revision mismatch"},
     {"minor_revision_older", "Device.MinRev=1", "MinRev = 1", "", "compatible keying accepts it", 0},
     {"product_name", "Device.ProdName=\"OpENer\"", "ProdName = \"OpENer\"", "", "product name \"OpENer PC\"", 0},
@@ -178,6 +185,63 @@ const fault faults[] = {
 
 INSTANTIATE_TEST_SUITE_P(faults, live_opener_fault, ::testing::ValuesIn(faults),
                          [](const auto& info) { return std::string(info.param.name); });
+
+// An EDS whose MinRev is newer than the device's minor revision: exact and
+// compatible keying both refuse the device, so a scanner keyed from the file
+// never connects. An error at MinRev even without --connections.
+TEST_F(live_opener, a_minor_revision_newer_than_the_device_is_an_error) {
+  const auto path = faulty_copy("Device.MinRev=4");
+  const auto r = run_edsc("verify --live " + device() + " " + quoted(path) + " --color never");
+  EXPECT_EQ(r.status, 1) << r.output;
+  const auto where = path + ":" + std::to_string(line_of(path, "MinRev = 4")) + ":";
+  const auto at = r.output.find(where);
+  ASSERT_NE(at, std::string::npos) << r.output;
+  const auto message = r.output.substr(at, r.output.find('\n', at) - at);
+  EXPECT_NE(message.find(": error: the device reports revision 2.3, the EDS says 2.4: exact keying refuses it, "
+                         "compatible keying refuses it too"),
+            std::string::npos)
+      << r.output;
+  EXPECT_TRUE(message.ends_with("[live-identity]")) << message;
+}
+
+// Another scanner holds Connection1 (the test itself, from the host, with an
+// originator of its own and a timeout long enough for the run): OpENer
+// refuses edsc's Connection1 with 0x0106. That is the device being busy,
+// not the EDS being wrong: no diagnostic, a message, exit 2; Connection2
+// (input only) is still opened and checked.
+TEST_F(live_opener, an_owned_device_is_busy_not_wrong) {
+  auto to = live::resolve(device(), 44818);
+  ASSERT_FALSE(live::failed(to));
+  auto opened = live::session::open(std::get<live::endpoint>(to), std::chrono::seconds(3));
+  ASSERT_FALSE(live::failed(opened));
+  auto& owner = std::get<live::session>(opened);
+  auto fo = opener_connection1_request();
+  fo.originator_vendor = 0x1234;   // not edsc's
+  fo.originator_serial = 0x600D;
+  fo.timeout_multiplier = 7;       // x512: 15 s at 30 ms
+  const auto reply = owner.request_raw(cip::service::forward_open, cip::encode_forward_open(fo));
+  ASSERT_FALSE(live::failed(reply));
+  ASSERT_EQ(std::get<cip::reply>(reply).general, 0);
+
+  const auto r = run_edsc("verify --live " + device() + " " + quoted(opener_eds) + " --connections --color never");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_EQ(r.output.find("[live-connection-refused]"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("0 errors"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(": error: " + device() + " is busy: Connection1 not checked: the device refused it with "
+                          "0x01 connection failure, extended 0x0106 ownership conflict"),
+            std::string::npos)
+      << r.output;
+  const auto c2 = r.output.find("\nConnection2 ");
+  ASSERT_NE(c2, std::string::npos) << r.output;
+  EXPECT_TRUE(r.output.substr(c2 + 1, r.output.find('\n', c2 + 1) - c2 - 1).ends_with(" match")) << r.output;
+
+  cip::forward_close_request fc;
+  fc.connection_serial = fo.connection_serial;
+  fc.originator_vendor = fo.originator_vendor;
+  fc.originator_serial = fo.originator_serial;
+  fc.path = unhex("20 04 24 97 2C 96 2C 64");
+  (void)owner.request_raw(cip::service::forward_close, cip::encode_forward_close(fc));
+}
 
 // The identity fields as tshark prints them (-T fields, separator ",").
 std::string tshark_identity(const nlohmann::json& i) {
