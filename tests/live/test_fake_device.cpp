@@ -5,12 +5,17 @@
 // live-io-rate). The stand-in answers only what verify --live asks.
 #include <gtest/gtest.h>
 
+#include <signal.h>
+
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <thread>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "cip/device_reply.hpp"
 #include "cip/encap.hpp"
@@ -70,8 +75,12 @@ struct quirks {
   bool one_byte_sizes = false;       // an Assembly size in one byte where it takes two
   std::uint16_t open_refused = 0;    // Forward_Open refused: 0x01 with this extended status
   bool close_refused = false;        // Forward_Close refused: 0x01
+  bool silent_io = false;            // no T->O frame at all
+  bool hang_up_at_close = false;     // the session ends at the Forward_Close, unanswered
   std::uint8_t missing_instance = 0; // Assembly attribute 4 of it: 0x05 path destination unknown
   bool no_assembly_class = false;    // the class (instance 0) answers 0x05 too
+  std::atomic<int>* opened = nullptr;  // counts the connections granted
+  std::atomic<int>* closed = nullptr;  // counts the Forward_Closes received
 };
 
 // One client's requests, answered as OpENer would, but for the frames and `q`.
@@ -112,13 +121,18 @@ void fake_device(int s, const std::atomic<bool>& stop, quirks q) {
       cip::put_u32(d, 10000);
       cip::put_u32(d, 10000);
       cip::put_u16(d, 0);
-      sender = std::make_unique<frame_sender>(next_id++);
+      if (!q.silent_io) sender = std::make_unique<frame_sender>(next_id);
+      ++next_id;
+      if (q.opened) ++*q.opened;
       answer = cip_reply(service, d);
+    } else if (service == 0x4E && q.hang_up_at_close) {
+      return;
     } else if (service == 0x4E && q.close_refused) {
       sender.reset();
       answer = cip_reply(service, {}, 0x01);
     } else if (service == 0x4E && request.size() >= data_at + 10) {  // Forward_Close
       sender.reset();
+      if (q.closed) ++*q.closed;
       cip::bytes d(request.begin() + static_cast<long>(data_at) + 2, request.begin() + static_cast<long>(data_at) + 10);
       cip::put_u16(d, 0);
       answer = cip_reply(service, d);
@@ -192,6 +206,54 @@ unsigned line_of(const std::string& path, const std::string& needle) {
   return 0;
 }
 
+// The summary table travels in the machine-readable reports: each check
+// with the EDS's and the device's value, and for an open connection the
+// frames counted, their size, the measured and the granted interval.
+TEST_F(live_fake_device, json_and_sarif_carry_the_summary_table) {
+  loopback_server device([](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {}); });
+  const auto base = "verify --live " + device.address() + " " + quoted(opener_eds) + " --connections --watch 0.3";
+  for (const auto* format : {"json", "sarif"}) {
+    SCOPED_TRACE(format);
+    const auto r = run_edsc(base + " --format " + format + " 2>/dev/null");
+    EXPECT_EQ(r.status, 1) << r.output;
+    const auto doc = nlohmann::json::parse(r.output, nullptr, false);
+    ASSERT_FALSE(doc.is_discarded()) << r.output;
+    const auto& live = std::string(format) == "json" ? doc["live"] : doc["runs"][0]["properties"]["live"];
+    ASSERT_TRUE(live.is_object()) << r.output;
+    EXPECT_EQ(live["host"], device.address());
+    std::map<std::string, nlohmann::json> checks;
+    for (const auto& c : live["checks"]) checks[c["check"]] = c;
+    EXPECT_EQ(checks["VendCode"]["eds"], "1");
+    EXPECT_EQ(checks["VendCode"]["device"], "1");
+    EXPECT_EQ(checks["VendCode"]["result"], "match");
+    EXPECT_EQ(checks["Assem100 size (instance 100)"]["device"], "32");
+    const auto& c1 = checks["Connection1"];
+    EXPECT_EQ(c1["result"], "mismatch");
+    EXPECT_EQ(c1["io"]["frame_bytes"], 16);
+    EXPECT_GE(c1["io"]["frames"].get<int>(), 2);
+    EXPECT_GT(c1["io"]["interval_ms"].get<double>(), 20.0);  // 50 ms apart, however slow the host
+    EXPECT_EQ(c1["io"]["granted_interval_ms"], 10.0);
+    EXPECT_GE(c1["io"]["watched_ms"].get<int>(), 300);
+    EXPECT_EQ(checks["Connection3"]["result"], "not tried");
+  }
+}
+
+// The watch is --watch long, however short --timeout is, and the message
+// about a connection that sent nothing gives that time: the one used.
+TEST_F(live_fake_device, the_watch_time_printed_is_the_one_used) {
+  loopback_server device([](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {.silent_io = true}); });
+  const auto r = run_edsc("verify --live " + device.address() + " " + quoted(opener_eds) +
+                          " --connections --watch 0.5 --timeout 0.2 --color never");
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find("Connection1 opened, but no T->O frame came within 500 ms"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("Connection2 opened, but no T->O frame came within 500 ms"), std::string::npos) << r.output;
+  EXPECT_GE(r.seconds, 1.0);  // two connections watched 0.5 s each
+  const auto watch_alone = run_edsc("verify --live " + device.address() + " " + quoted(opener_eds) + " --watch 1");
+  EXPECT_EQ(watch_alone.status, 2) << watch_alone.output;
+  EXPECT_NE(watch_alone.output.find("--watch"), std::string::npos) << watch_alone.output;
+  EXPECT_NE(watch_alone.output.find("needs --connections"), std::string::npos) << watch_alone.output;
+}
+
 // An assembly instance the device calls unknown (0x05) while its Assembly
 // class answers is an error where the EDS gives the instance: Assem151 has
 // no path of its own, Connection1's path names instance 151 (2C 97... as
@@ -235,6 +297,72 @@ TEST_F(live_fake_device, an_ownership_conflict_is_a_busy_device_not_an_eds_error
             std::string::npos)
       << r.output;
   EXPECT_NE(r.output.find("busy 0x01/0x0106"), std::string::npos) << r.output;
+}
+
+// SIGTERM while a connection's I/O is watched: edsc closes it (the device
+// sees the Forward_Close), reports the checks made, marks the rest not
+// reached, and exits 128 + 15, long before the watch would have ended.
+TEST_F(live_fake_device, a_signal_midway_closes_the_connection_and_reports_what_was_found) {
+  std::atomic<int> opened{0}, closed{0};
+  loopback_server device([&](int s, const std::atomic<bool>& stop) {
+    fake_device(s, stop, {.opened = &opened, .closed = &closed});
+  });
+  const auto log = (std::filesystem::temp_directory_path() / ("edsc-signal-" + std::to_string(::getpid()))).string();
+  const auto start = std::chrono::steady_clock::now();
+  edsc_child edsc({"verify", "--live", device.address(), opener_eds, "--connections", "--watch", "30", "--color",
+                   "never"},
+                  log);
+  ASSERT_TRUE(edsc.started());
+  for (int i = 0; i < 600 && opened == 0; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  ASSERT_EQ(opened, 1);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // some frames
+  edsc.signal(SIGTERM);
+  const auto r = edsc.finish();
+  std::filesystem::remove(log);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 25.0);
+  EXPECT_EQ(r.status, 128 + SIGTERM) << r.output;
+  EXPECT_EQ(closed, 1) << r.output;
+  EXPECT_NE(r.output.find("\nVendCode "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("; interrupted after "), std::string::npos) << r.output;
+  const auto c2 = r.output.find("\nConnection2 ");
+  ASSERT_NE(c2, std::string::npos) << r.output;
+  EXPECT_NE(r.output.substr(c2, r.output.find('\n', c2 + 1) - c2).find("not reached: interrupted"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("interrupted by SIGTERM"), std::string::npos) << r.output;
+}
+
+// The device goes away in mid-run (it hangs up instead of answering the
+// Forward_Close): the checks made so far stay in the report, the failure
+// follows it, exit 2.
+TEST_F(live_fake_device, a_device_lost_midway_keeps_the_report_so_far) {
+  loopback_server device([](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {.hang_up_at_close = true}); });
+  const auto r = run_edsc("verify --live " + device.address() + " " + quoted(opener_eds) +
+                          " --connections --watch 0.3 --timeout 1 --color never");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("\nVendCode "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("\nAssem100 size (instance 100) "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("; device lost after "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("T->O frames carry 16 data bytes"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(": Forward_Close: the device closed the connection"), std::string::npos) << r.output;
+}
+
+// While the run takes more than a second and standard error is a terminal,
+// a line there says what it does; into a pipe, never.
+TEST_F(live_fake_device, progress_shows_on_a_terminal_only) {
+  loopback_server device([](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {}); });
+  const auto args = "verify --live " + device.address() + " " + quoted(opener_eds) + " --connections --watch 0.8";
+  const auto piped = run_edsc(args);
+  EXPECT_EQ(piped.output.find("edsc: opening Connection"), std::string::npos) << piped.output;
+  const auto tty = shell("python3 -c 'import pty, sys; sys.exit(pty.spawn(sys.argv[1:]) >> 8)' " +
+                         quoted(EDSC_BINARY) + " " + args + " </dev/null 2>&1");
+  EXPECT_EQ(tty.status, 1) << tty.out;
+  EXPECT_NE(tty.out.find("edsc: opening Connection2 (2 of 3) and watching its I/O for 0.8 s"), std::string::npos)
+      << tty.out;
+  EXPECT_NE(tty.out.find("\r\033[K"), std::string::npos) << tty.out;  // erased, not left in the report
+  const auto quick = shell("python3 -c 'import pty, sys; sys.exit(pty.spawn(sys.argv[1:]) >> 8)' " +
+                           quoted(EDSC_BINARY) + " verify --live " + device.address() + " " + quoted(opener_eds) +
+                           " </dev/null 2>&1");
+  EXPECT_EQ(quick.out.find("edsc: "), std::string::npos) << quick.out;
 }
 
 // What `edsc probe` asks, answered: OpENer's identity, ListServices, the

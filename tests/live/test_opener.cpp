@@ -47,6 +47,13 @@ class live_opener : public ::testing::Test {
     EXPECT_EQ(r.status, 0) << r.output;
     return path;
   }
+  // tcpdump on the device's interface into `pcap`, once it listens; its pid.
+  pid_t capture(const std::string& pcap) {
+    const auto dump = net_->spawn({"tcpdump", "-i", net_->dev_if, "--immediate-mode", "-U", "-n", "-w", pcap}, "tcpdump.log");
+    for (int i = 0; dump > 0 && i < 200 && shell("grep -q listening " + net_->dir + "/tcpdump.log").status != 0; ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    return dump;
+  }
   std::unique_ptr<test_network> net_;
 };
 
@@ -243,6 +250,50 @@ TEST_F(live_opener, an_owned_device_is_busy_not_wrong) {
   (void)owner.request_raw(cip::service::forward_close, cip::encode_forward_close(fc));
 }
 
+// The Identity object's extended device status (bits 4-7 of attribute 5):
+// 6 or 7 once OpENer has had an I/O connection (it keeps saying so after
+// the connection is closed, so this tells only that one was opened).
+bool has_had_io_connection(const std::string& ip) {
+  auto to = live::resolve(ip, 44818);
+  if (live::failed(to)) return false;
+  auto s = live::session::open(std::get<live::endpoint>(to), std::chrono::seconds(1));
+  if (live::failed(s)) return false;
+  const auto id = live::read_identity(std::get<live::session>(s));
+  if (live::failed(id)) return false;
+  const auto ext = (std::get<cip::identity>(id).status >> 4) & 0xF;
+  return ext == 6 || ext == 7;
+}
+
+// Ctrl-C while edsc watches Connection1: on the wire (tcpdump on the
+// device's side, read by tshark) a Forward_Close follows, which OpENer
+// answers with success; edsc prints the checks made and exits 130.
+TEST_F(live_opener, ctrl_c_closes_the_open_connection_on_the_wire) {
+  if (shell("command -v tcpdump >/dev/null && command -v tshark >/dev/null").status != 0)
+    GTEST_SKIP() << "tcpdump or tshark is missing (Debian packages tcpdump, tshark)";
+  const auto pcap = net_->dir + "/interrupted.pcap";
+  const auto dump = capture(pcap);
+  ASSERT_GT(dump, 0);
+  edsc_child edsc({"verify", "--live", device(), opener_eds, "--connections", "--watch", "30", "--color", "never"},
+                  net_->dir + "/verify.log");
+  ASSERT_TRUE(edsc.started());
+  bool open = false;
+  for (int i = 0; i < 100 && !(open = has_had_io_connection(device())); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  ASSERT_TRUE(open) << "OpENer never reported an I/O connection";
+  edsc.signal(SIGINT);
+  const auto r = edsc.finish();
+  EXPECT_EQ(r.status, 130) << r.output;
+  EXPECT_NE(r.output.find("\nVendCode "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("; interrupted after "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("interrupted by SIGINT"), std::string::npos) << r.output;
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  net_->stop(dump, SIGINT);
+  // Forward_Close (service 0x4E): edsc's request (0) and OpENer's reply (1), status 0.
+  const auto fc = shell("tshark -r " + quoted(pcap) + " -Y 'cip.sc == 0x4e' -T fields -e cip.rr -e cip.genstat 2>/dev/null");
+  EXPECT_NE(fc.out.find("0\t\n"), std::string::npos) << fc.out;
+  EXPECT_NE(fc.out.find("1\t0"), std::string::npos) << fc.out;
+}
+
 // The identity fields as tshark prints them (-T fields, separator ",").
 std::string tshark_identity(const nlohmann::json& i) {
   char serial[16], vendor[8];
@@ -256,10 +307,8 @@ TEST_F(live_opener, a_captured_session_decodes_in_tshark_with_the_same_identity)
   if (shell("command -v tcpdump >/dev/null && command -v tshark >/dev/null").status != 0)
     GTEST_SKIP() << "tcpdump or tshark is missing (Debian packages tcpdump, tshark)";
   const auto pcap = net_->dir + "/session.pcap";
-  const auto dump = net_->spawn({"tcpdump", "-i", net_->dev_if, "--immediate-mode", "-U", "-n", "-w", pcap}, "tcpdump.log");
+  const auto dump = capture(pcap);
   ASSERT_GT(dump, 0);
-  for (int i = 0; i < 200 && shell("grep -q listening " + net_->dir + "/tcpdump.log").status != 0; ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
   const auto probe = run_edsc("probe " + device() + " --udp --timeout 5 --format json");
   ASSERT_EQ(probe.status, 0) << probe.output;
   const auto verify = run_edsc("verify --live " + device() + " " + quoted(opener_eds) + " --connections");
