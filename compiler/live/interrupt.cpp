@@ -1,6 +1,7 @@
 #include "live/interrupt.hpp"
 
 #include <csignal>
+#include <initializer_list>
 
 namespace edsc::live {
 
@@ -18,8 +19,13 @@ void catch_interrupts() {
   struct sigaction sa {};
   sa.sa_handler = note_signal;
   sigemptyset(&sa.sa_mask);
-  ::sigaction(SIGINT, &sa, nullptr);
-  ::sigaction(SIGTERM, &sa, nullptr);
+  for (const int sig : {SIGINT, SIGTERM}) {
+    // A signal ignored on entry stays ignored: a shell starts background
+    // jobs so, that Ctrl-C at the terminal does not reach them.
+    struct sigaction was {};
+    if (::sigaction(sig, nullptr, &was) == 0 && was.sa_handler == SIG_IGN) continue;
+    ::sigaction(sig, &sa, nullptr);
+  }
 }
 
 int interruption() { return caught; }

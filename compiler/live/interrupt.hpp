@@ -7,7 +7,7 @@
 namespace edsc::live {
 
 // Installs the handler for SIGINT and SIGTERM (without SA_RESTART: a wait
-// wakes up).
+// wakes up), unless the signal was ignored when edsc started.
 void catch_interrupts();
 // The signal caught since, or 0.
 [[nodiscard]] int interruption();

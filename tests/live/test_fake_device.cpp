@@ -331,6 +331,19 @@ TEST_F(live_fake_device, a_signal_midway_closes_the_connection_and_reports_what_
   EXPECT_NE(r.output.find("interrupted by SIGTERM"), std::string::npos) << r.output;
 }
 
+// A SIGINT ignored when edsc starts (a shell's background job, `trap ""
+// INT`) stays ignored: the run goes on to its end and its own exit status.
+TEST_F(live_fake_device, an_interrupt_ignored_on_entry_stays_ignored) {
+  loopback_server device([](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {}); });
+  const auto script = "trap '' INT; " + quoted(EDSC_BINARY) + " verify --live " + device.address() + " " +
+                      quoted(opener_eds) + " --connections --watch 0.6 --color never & p=$!; sleep 0.4; " +
+                      "kill -INT $p; wait $p; echo exit $?";
+  const auto r = shell("sh -c " + quoted(script) + " 2>&1");
+  EXPECT_NE(r.out.find("exit 1\n"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("interrupted"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("T->O frames carry 16 data bytes"), std::string::npos) << r.out;
+}
+
 // The device goes away in mid-run (it hangs up instead of answering the
 // Forward_Close): the checks made so far stay in the report, the failure
 // follows it, exit 2.
