@@ -42,10 +42,8 @@ struct library_match {
   std::string vendor_name;               // its VendName
 };
 
-std::vector<library_match> match_library(const std::string& dir, const cip::identity& id, std::string& problem) {
+std::vector<library_match> match_library(const io::collected_inputs& inputs, const cip::identity& id) {
   std::vector<library_match> out;
-  const auto inputs = io::collect_inputs({dir});
-  if (!inputs.errors.empty()) problem = inputs.errors.front().message;
   for (const auto& path : inputs.files) {
     auto read = io::read_source(path);
     auto* src = std::get_if<std::unique_ptr<source_file>>(&read);
@@ -68,8 +66,7 @@ std::vector<library_match> match_library(const std::string& dir, const cip::iden
   return out;
 }
 
-std::string render_probe_text(const probe_cli& cli, const live::probe_result& r, const std::vector<library_match>& lib,
-                        const std::string& lib_problem) {
+std::string render_probe_text(const probe_cli& cli, const live::probe_result& r, const std::vector<library_match>& lib) {
   const auto& id = r.identity;
   std::string out = fmt::format("{} ({})\n", cli.host, r.identity_source);
   // edsc has no vendor table: the name is what a matching EDS file calls it.
@@ -95,7 +92,6 @@ std::string render_probe_text(const probe_cli& cli, const live::probe_result& r,
     for (const auto& m : lib)
       out += fmt::format("  {:<10}  {}  (revision {}.{})\n", live::to_string(m.verdict), m.path, m.major, m.minor);
     if (lib.empty()) out += "  no EDS file of this vendor, device type and product code\n";
-    if (!lib_problem.empty()) out += fmt::format("  ({})\n", lib_problem);
   }
   return out;
 }
@@ -148,6 +144,13 @@ std::string render_probe_json(const probe_cli& cli, const live::probe_result& r,
 }
 
 int run_probe(const probe_cli& cli) {
+  // A library that cannot be read is a usage error, found before the device is asked.
+  io::collected_inputs library;
+  if (!cli.library.empty()) {
+    library = io::collect_inputs({cli.library});
+    for (const auto& e : library.errors) print_error(fmt::format("--library {}", e.message));
+    if (!library.errors.empty()) return exit_failure;
+  }
   const auto to = device_address(cli.host);
   if (!to) return exit_failure;
   live::probe_options opt;
@@ -161,9 +164,8 @@ int run_probe(const probe_cli& cli) {
   }
   auto& result = std::get<live::probe_result>(r);
   std::vector<library_match> lib;
-  std::string lib_problem;
   if (!cli.library.empty()) {
-    lib = match_library(cli.library, result.identity, lib_problem);
+    lib = match_library(library, result.identity);
     std::vector<std::uint32_t> named;
     for (const auto& m : lib) named.insert(named.end(), m.instances.begin(), m.instances.end());
     if (!named.empty() && !result.assemblies_note.empty()) {
@@ -178,7 +180,7 @@ int run_probe(const probe_cli& cli) {
   }
   std::optional<std::variant<std::size_t, std::string>> uploaded;
   if (!cli.upload_eds.empty()) uploaded = upload_eds(cli, *to, opt.timeout);
-  auto text = cli.format == "json" ? render_probe_json(cli, result, lib) : render_probe_text(cli, result, lib, lib_problem);
+  auto text = cli.format == "json" ? render_probe_json(cli, result, lib) : render_probe_text(cli, result, lib);
   if (uploaded && std::holds_alternative<std::size_t>(*uploaded)) {
     const auto n = std::get<std::size_t>(*uploaded);
     if (cli.format == "json") {

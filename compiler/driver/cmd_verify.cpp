@@ -113,10 +113,28 @@ std::vector<std::string> ignored_by_decode(const verify_cli& cli) {
   return out;
 }
 
-int run_verify(const verify_cli& cli) {
-  if (!cli.live.host.empty()) return run_verify_live(cli.live, cli.eds, cli.warning_flags, cli.format, cli.color);
-  if (cli.live.connections) {
-    print_error("--connections opens connections to a live device: it needs --live HOST");
+// The options among `names` given on the command line.
+std::vector<std::string> given(const CLI::App& cmd, std::initializer_list<const char*> names) {
+  std::vector<std::string> out;
+  for (const char* n : names)
+    if (const auto* o = cmd.get_option_no_throw(n); o != nullptr && o->count() > 0) out.push_back(n);
+  return out;
+}
+
+int run_verify(const verify_cli& cli, const CLI::App& cmd) {
+  if (!cli.live.host.empty()) {
+    // A capture's options mean nothing to a live device: refused, not ignored.
+    if (const auto extra = given(cmd, {"--capture", "--mac", "--network", "--decode"}); !extra.empty()) {
+      print_error(fmt::format("verify --live compares a running device with its EDS; {} {} for CAN captures and "
+                              "cannot be used with it",
+                              fmt::join(extra, ", "), extra.size() == 1 ? "is" : "are"));
+      return exit_failure;
+    }
+    return run_verify_live(cli.live, cli.eds, cli.warning_flags, cli.format, cli.color);
+  }
+  if (const auto extra = given(cmd, {"--connections", "--timeout", "--watch"}); !extra.empty()) {
+    print_error(fmt::format("{} {} to a live device: {} --live HOST", fmt::join(extra, ", "),
+                            extra.size() == 1 ? "applies" : "apply", extra.size() == 1 ? "it needs" : "they need"));
     return exit_failure;
   }
   if (!cli.decode.empty()) {
@@ -197,7 +215,7 @@ void register_verify(CLI::App& app, command_action& run) {
   cmd->add_option("--decode", cli->decode, "Print the decoded conversation of this log as a table, compare nothing");
   add_verify_live_options(cmd, cli->live);
   add_report_options(cmd, cli->color, cli->format, cli->warning_flags);
-  cmd->callback([&run, cli] { run = [cli] { return run_verify(*cli); }; });
+  cmd->callback([&run, cli, cmd] { run = [cli, cmd] { return run_verify(*cli, *cmd); }; });
 }
 
 }  // namespace edsc::driver

@@ -15,6 +15,7 @@ struct verify_live_cli {
   std::string host;
   bool connections = false;
   double timeout_s = 3.0;
+  double watch_s = 0;  // 0: ten RPIs, at least 0.3 s
 };
 
 void add_verify_live_options(CLI::App* cmd, verify_live_cli& cli);

@@ -9,6 +9,7 @@
 
 #include "cip/io_frame.hpp"
 #include "cip/status.hpp"
+#include "live/interrupt.hpp"
 
 namespace edsc::live {
 
@@ -31,7 +32,7 @@ void measure(int sock, const connection_plan& plan, const cip::forward_open_repl
   std::optional<clock::time_point> first, last;
   sockaddr_in to = device;
   to.sin_port = htons(cip::io_port);
-  while (clock::now() < end) {
+  while (clock::now() < end && interruption() == 0) {
     if (send_ot && clock::now() >= next_send) {
       cip::io_frame f;
       f.connection_id = granted.ot_connection_id;
@@ -44,7 +45,7 @@ void measure(int sock, const connection_plan& plan, const cip::forward_open_repl
       next_send += ot_period;
     }
     const auto wake = send_ot ? std::min(next_send, end) : end;
-    if (!wait_readable(sock, wake)) continue;
+    if (!wait_readable(sock, wake, true)) continue;
     std::uint8_t buf[2048];
     sockaddr_in from{};
     socklen_t len = sizeof from;
@@ -66,6 +67,7 @@ void measure(int sock, const connection_plan& plan, const cip::forward_open_repl
       st.a_wrong_size = f->data.size();
     }
   }
+  st.watched = std::chrono::duration_cast<std::chrono::milliseconds>(std::min(clock::now(), end) - start);
   if (st.frames > 1)
     st.mean_interval_us =
         std::chrono::duration<double, std::micro>(*last - *first).count() / static_cast<double>(st.frames - 1);
@@ -73,14 +75,17 @@ void measure(int sock, const connection_plan& plan, const cip::forward_open_repl
 
 }  // namespace
 
-result<connection_outcome> exercise_connection(session& s, const connection_plan& plan, std::uint16_t serial,
-                                               std::chrono::milliseconds window) {
+connection_outcome exercise_connection(session& s, const connection_plan& plan, std::uint16_t serial,
+                                       std::chrono::milliseconds window) {
   connection_outcome out;
   // Bound before the Forward_Open so the first frames are not lost.
   sockaddr_in local = s.local();
   local.sin_port = htons(cip::io_port);
   auto udp = udp_socket(local);
-  if (auto* e = failed(udp)) return net_error{e->message + " (class 1 I/O needs UDP port 2222 on this host)"};
+  if (auto* e = failed(udp)) {
+    out.failure = net_error{e->message + " (class 1 I/O needs UDP port 2222 on this host)"};
+    return out;
+  }
 
   auto fo = plan.request;
   fo.connection_serial = serial;
@@ -90,7 +95,10 @@ result<connection_outcome> exercise_connection(session& s, const connection_plan
   fo.to_connection_id = 0x45440000u + serial;  // ours for T->O point-to-point
   const auto service = fo.large ? cip::service::large_forward_open : cip::service::forward_open;
   auto reply = s.request_raw(service, cip::encode_forward_open(fo));
-  if (auto* e = failed(reply)) return *e;
+  if (auto* e = failed(reply)) {
+    out.failure = *e;
+    return out;
+  }
   const auto& rep = std::get<cip::reply>(reply);
   if (rep.general != 0) {
     out.general = rep.general;
@@ -98,18 +106,26 @@ result<connection_outcome> exercise_connection(session& s, const connection_plan
     return out;
   }
   auto granted = cip::decode_forward_open_ok(rep.data, 0);
-  if (!granted) return net_error{fmt::format("malformed Forward_Open reply: {}", granted.error().what)};
+  if (!granted) {
+    out.failure = net_error{fmt::format("malformed Forward_Open reply: {}", granted.error().what)};
+    return out;
+  }
   out.opened = true;
   out.granted = granted.value();
   measure(std::get<fd>(udp).get(), plan, out.granted, s.peer().addr, window, out.io);
+  out.interrupted = interruption() != 0;
 
+  // Closed however the watch ended: by the connection triad and path, as opened.
   cip::forward_close_request fc;
   fc.connection_serial = serial;
   fc.originator_vendor = originator_vendor;
   fc.originator_serial = originator_serial;
   fc.path = plan.app_path;
   auto closed = s.request_raw(cip::service::forward_close, cip::encode_forward_close(fc));
-  if (auto* e = failed(closed)) return *e;
+  if (auto* e = failed(closed)) {
+    out.failure = net_error{fmt::format("Forward_Close: {}", e->message)};
+    return out;
+  }
   if (const auto& c = std::get<cip::reply>(closed); c.general != 0)
     out.close_problem = fmt::format("Forward_Close refused: {}", cip::describe_status(c.general, c.additional));
   return out;

@@ -21,6 +21,7 @@ struct io_stats {
   unsigned undecodable = 0;
   unsigned sent = 0;            // O->T frames sent
   double mean_interval_us = 0;  // between T->O frames
+  std::chrono::milliseconds watched{0};  // how long edsc watched (shorter when interrupted)
 };
 
 struct connection_outcome {
@@ -29,12 +30,16 @@ struct connection_outcome {
   std::vector<std::uint16_t> additional;
   cip::forward_open_reply granted;
   io_stats io;
-  std::string close_problem;  // Forward_Close refused or unanswered
+  bool interrupted = false;   // a signal cut the watch short (the connection was still closed)
+  std::string close_problem;  // Forward_Close refused
+  // The device stopped answering (or a local failure): the run ends here.
+  // What was measured before stays in `io`.
+  std::optional<net_error> failure;
 };
 
-// A network failure (the device stops answering) is the error; a refusal is
-// an outcome.
-[[nodiscard]] result<connection_outcome> exercise_connection(session& s, const connection_plan& plan,
-                                                             std::uint16_t serial, std::chrono::milliseconds window);
+// Opens the connection, watches its I/O for `window` (less when a signal is
+// caught), closes it. A refusal is an outcome, as is a failure midway.
+[[nodiscard]] connection_outcome exercise_connection(session& s, const connection_plan& plan, std::uint16_t serial,
+                                                     std::chrono::milliseconds window);
 
 }  // namespace edsc::live

@@ -187,11 +187,12 @@ std::vector<connection_plan> plan_connections(const model::device& dev) {
 
 std::vector<assembly_target> plan_assemblies(const model::device& dev) {
   std::vector<assembly_target> out;
-  auto add = [&](const model::assembly* a, std::uint32_t instance) {
+  auto add = [&](const model::assembly* a, std::uint32_t instance, const model::value& path, const model::origin& entry) {
     if (a == nullptr || instance == 0) return;
     for (const auto& t : out)
       if (t.assem == a) return;
-    out.push_back({a, instance, emit::assembly_size(dev, a)});
+    const auto where = path.present() && !path.from.where.empty() ? path.from.where : entry.where;
+    out.push_back({a, instance, emit::assembly_size(dev, a), where});
   };
   for (const auto& a : dev.assemblies) {
     if (a.kind != model::assembly_kind::assem) continue;
@@ -203,15 +204,15 @@ std::vector<assembly_target> plan_assemblies(const model::device& dev) {
       if ((s.kind == segment_kind::instance || s.kind == segment_kind::connection_point) && !inst)
         inst = segment_value(dev, s);
     }
-    if (cls == 4u && inst) add(&a, *inst);
+    if (cls == 4u && inst) add(&a, *inst, a.path, a.from);
   }
   std::vector<emit::header_issue> issues;
   for (const auto& f : emit::collect_connections(dev, issues))
     for (const auto& c : dev.connections) {
       if (c.number != f.number) continue;
-      add(emit::assembly_of(dev, c.ot_format), f.output_instance);
-      add(emit::assembly_of(dev, c.to_format), f.input_instance);
-      add(emit::assembly_of(dev, c.target_config_format), f.config_instance);
+      add(emit::assembly_of(dev, c.ot_format), f.output_instance, c.path, c.from);
+      add(emit::assembly_of(dev, c.to_format), f.input_instance, c.path, c.from);
+      add(emit::assembly_of(dev, c.target_config_format), f.config_instance, c.path, c.from);
       break;
     }
   return out;

@@ -36,6 +36,7 @@ struct assembly_target {
   const model::assembly* assem = nullptr;
   std::uint32_t instance = 0;
   std::uint32_t eds_size = 0;  // bytes
+  span named_at;               // the path that gives the instance (the assembly's own, or a connection's)
 };
 [[nodiscard]] std::vector<assembly_target> plan_assemblies(const model::device& dev);
 

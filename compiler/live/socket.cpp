@@ -7,11 +7,14 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
 
 #include <fmt/format.h>
+
+#include "live/interrupt.hpp"
 
 namespace edsc::live {
 
@@ -152,6 +155,15 @@ result<fd> udp_socket(const sockaddr_in& local) {
   return s;
 }
 
-bool wait_readable(int s, clock::time_point deadline) { return wait_for(s, POLLIN, deadline); }
+bool wait_readable(int s, clock::time_point deadline, bool interruptible) {
+  if (!interruptible) return wait_for(s, POLLIN, deadline);
+  // In slices: a signal caught just before poll() began does not wake it.
+  for (;;) {
+    if (interruption() != 0) return false;
+    const auto slice = std::min(deadline, clock::now() + std::chrono::milliseconds(100));
+    if (wait_for(s, POLLIN, slice)) return true;
+    if (clock::now() >= deadline) return false;
+  }
+}
 
 }  // namespace edsc::live

@@ -62,7 +62,9 @@ struct endpoint {
 
 // A UDP socket bound to `local` (port 0: any).
 [[nodiscard]] result<fd> udp_socket(const sockaddr_in& local);
-// Waits for readability until the deadline; false on timeout.
-[[nodiscard]] bool wait_readable(int s, clock::time_point deadline);
+// Waits for readability until the deadline; false on timeout. An
+// interruptible wait also ends, false, once a signal was caught
+// (live/interrupt.hpp).
+[[nodiscard]] bool wait_readable(int s, clock::time_point deadline, bool interruptible = false);
 
 }  // namespace edsc::live

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "cip/status.hpp"
+#include "live/interrupt.hpp"
 #include "live/io.hpp"
 #include "live/plan.hpp"
 #include "live/session.hpp"
@@ -25,13 +26,19 @@ span at(const value& v, const model::origin& fallback) {
 std::string revision_text(unsigned major, unsigned minor) { return fmt::format("{}.{}", major, minor); }
 
 struct checker {
+  checker(const model::device& d, const live_options& o, live_report& r) : dev(d), opt(o), out(r) {}
   const model::device& dev;
   const live_options& opt;
   live_report& out;
   std::optional<cip::identity> device_id;
 
   void row(std::string check, std::string eds, std::string device, verdict v) {
-    out.rows.push_back({std::move(check), std::move(eds), std::move(device), v});
+    check_row r;
+    r.check = std::move(check);
+    r.eds = std::move(eds);
+    r.device = std::move(device);
+    r.result = v;
+    out.rows.push_back(std::move(r));
   }
   void diag(diag_id id, span where, std::string message) {
     out.diags.push_back(make_diagnostic(id, where, std::move(message)));
@@ -68,15 +75,20 @@ struct checker {
              fmt::format("the device reports revision {}, the EDS says {}: exact and compatible keying both "
                          "refuse a different major revision",
                          dev_rev, eds_rev));
+      } else if (min > id.minor) {
+        // Compatible keying accepts a device at least as new as the key: not this one.
+        row("MinRev", eds_rev, dev_rev, verdict::mismatch);
+        diag(diag_id::live_identity, d.min_rev.from.where,
+             fmt::format("the device reports revision {}, the EDS says {}: exact keying refuses it, compatible "
+                         "keying refuses it too (the device's minor revision is older): a scanner keyed from this "
+                         "file keeps the device off line",
+                         dev_rev, eds_rev));
       } else if (min != id.minor) {
-        const bool compatible = id.minor >= min;
         row("MinRev", eds_rev, dev_rev, verdict::mismatch);
         diag(diag_id::live_minor_revision, d.min_rev.from.where,
              fmt::format("the device reports revision {}, the EDS says {}: exact keying refuses it, compatible "
-                         "keying {}",
-                         dev_rev, eds_rev,
-                         compatible ? "accepts it (the device's minor revision is newer)"
-                                    : "refuses it too (the device's minor revision is older)"));
+                         "keying accepts it (the device's minor revision is newer)",
+                         dev_rev, eds_rev));
       } else {
         row("MajRev/MinRev", eds_rev, dev_rev, verdict::match);
       }
@@ -96,14 +108,42 @@ struct checker {
 
   std::string assem_name(const model::assembly& a) { return fmt::format("Assem{}", a.number); }
 
+  // Whether the device answers for the Assembly class itself (its Max
+  // Instance): then an instance it calls unknown is certainly not there.
+  std::optional<bool> assembly_class;
+  result<bool> assembly_class_answers(session& s) {
+    if (!assembly_class) {
+      auto r = s.request(cip::service::get_attribute_single, cip::logical_path(0x04, 0, 2));
+      if (auto* e = failed(r)) return *e;
+      assembly_class = std::get<cip::reply>(r).general == 0;
+    }
+    return *assembly_class;
+  }
+
   // Attribute 4 of each assembly instance the EDS locates.
   std::optional<net_error> assemblies(session& s) {
-    for (const auto& t : plan_assemblies(dev)) {
+    const auto targets = plan_assemblies(dev);
+    for (std::size_t i = 0; i < targets.size(); ++i) {
+      const auto& t = targets[i];
       const auto check = fmt::format("{} size (instance {})", assem_name(*t.assem), t.instance);
+      if (halted(check, std::to_string(t.eds_size))) continue;
+      step(fmt::format("reading the size of assembly instance {} ({} of {})", t.instance, i + 1, targets.size()));
       auto r = s.request(cip::service::get_attribute_single, cip::logical_path(0x04, t.instance, 4));
-      if (auto* e = failed(r)) return *e;
+      if (auto* e = failed(r)) return lost(*e, check, std::to_string(t.eds_size));
       const auto& rep = std::get<cip::reply>(r);
       const auto where = at(t.assem->size, t.assem->from);
+      // 0x05 path destination unknown (OpENer's answer), 0x16 object does not exist.
+      if (rep.general == 0x05 || rep.general == 0x16) {
+        auto known = assembly_class_answers(s);
+        if (auto* e = failed(known)) return lost(*e, check, std::to_string(t.eds_size));
+        if (std::get<bool>(known)) {
+          row(check, std::to_string(t.eds_size), "no such instance", verdict::mismatch);
+          diag(diag_id::live_assembly_missing, t.named_at,
+               fmt::format("the device has no assembly instance {} ({}), which {} says it has", t.instance,
+                           cip::describe_status(rep.general, rep.additional), assem_name(*t.assem)));
+          continue;
+        }
+      }
       if (rep.general != 0 || rep.data.size() < 2) {
         const auto why = rep.general != 0 ? cip::describe_status(rep.general, rep.additional)
                                           : std::string("a reply without the size");
@@ -170,31 +210,56 @@ struct checker {
     return status;
   }
 
+  // A refusal that is the device's state, not the EDS's fault: another
+  // scanner holds what the connection needs.
+  static const char* busy_reason(std::uint8_t general, std::uint16_t ext) {
+    if (general != 0x01) return nullptr;
+    switch (ext) {
+      case 0x0100: return "a connection with the same identity is already open";
+      case 0x0106: return "another scanner owns what it connects to";
+      case 0x0113: return "the device has no connection free";
+      default: return nullptr;
+    }
+  }
+
   std::optional<net_error> connections(session& s) {
     std::uint16_t serial = static_cast<std::uint16_t>(0x4500 + (::getpid() & 0xFF));
-    for (const auto& p : plan_connections(dev)) {
+    const auto plans = plan_connections(dev);
+    for (std::size_t i = 0; i < plans.size(); ++i) {
+      const auto& p = plans[i];
       const auto name = fmt::format("Connection{}", p.facts.number);
       const auto sizes = fmt::format("O->T {} T->O {} cfg {}", p.facts.output_size, p.facts.input_size, p.facts.config_size);
+      if (halted(name, sizes)) continue;
       if (!p.not_openable.empty()) {
         row(name, sizes, "not opened", verdict::not_tried);
         diag(diag_id::live_not_checked, p.conn->from.where,
              fmt::format("{} not opened: {}", name, p.not_openable));
         continue;
       }
-      const auto rpi_ms = std::max<std::uint32_t>(p.to_rpi_us / 1000, 1);
-      const auto window = opt.io_window.count() > 0 ? opt.io_window
-                                                    : std::chrono::milliseconds(std::max<std::uint32_t>(300, rpi_ms * 10));
-      auto r = exercise_connection(s, p, ++serial, std::min(window, opt.timeout));
-      if (auto* e = failed(r)) return *e;
-      const auto& o = std::get<connection_outcome>(r);
+      const auto window = io_window(opt, p.to_rpi_us);
+      step(fmt::format("opening {} ({} of {}) and watching its I/O for {:.1f} s", name, i + 1, plans.size(),
+                       window.count() / 1000.0));
+      const auto o = exercise_connection(s, p, ++serial, window);
       if (!o.opened) {
+        if (o.failure) return lost(*o.failure, name, sizes);
         const auto ext = o.general == 0x01 && !o.additional.empty() ? o.additional[0] : 0;
+        if (const auto* why = busy_reason(o.general, ext)) {
+          row(name, sizes, fmt::format("busy 0x{:02X}/0x{:04X}", o.general, ext), verdict::not_tried);
+          out.rows.back().refused = std::pair<int, int>{o.general, ext};
+          out.busy.push_back(fmt::format("{} not checked: the device refused it with {}: {}; that says nothing "
+                                         "of the EDS",
+                                         name, cip::describe_status(o.general, o.additional), why));
+          continue;
+        }
         row(name, sizes, fmt::format("refused 0x{:02X}/0x{:04X}", o.general, ext), verdict::mismatch);
+        out.rows.back().refused = std::pair<int, int>{o.general, ext};
         diag(diag_id::live_connection_refused, refusal_site(p, ext),
              fmt::format("{} refused: {}", name, refusal_words(p, o)));
         continue;
       }
       frames(p, o, name, sizes);
+      if (o.failure) return lost(*o.failure, {}, {});
+      if (o.interrupted) out.interrupted = interruption();
     }
     return std::nullopt;
   }
@@ -204,6 +269,8 @@ struct checker {
     const auto& c = *p.conn;
     const auto to_site = at(c.to_size, model::origin{0, at(c.to_format, c.from)});
     bool ok = true;
+    if (!o.close_problem.empty())
+      diag(diag_id::live_not_checked, c.from.where, fmt::format("{}: {}", name, o.close_problem));
     // Frames of a multicast T->O go to a group edsc does not join: not watched.
     const bool multicast = p.request.to.type == cip::conn_type::multicast;
     if (multicast) {
@@ -212,12 +279,14 @@ struct checker {
       row(name, sizes, "open; T->O multicast, frames not watched", verdict::match);
       return;
     }
+    // A watch cut short proves nothing by what did not come yet.
+    const bool whole_watch = !o.interrupted && !o.failure;
     const bool expects_frames = p.request.to.type != cip::conn_type::null;
-    if (expects_frames && st.frames == 0) {
+    if (whole_watch && expects_frames && st.frames == 0) {
       ok = false;
       diag(diag_id::live_io_frames, to_site,
            fmt::format("{} opened, but no T->O frame came within {} ms (RPI {} us granted)", name,
-                       std::max<std::uint32_t>(300, p.to_rpi_us / 100), o.granted.to_api_us));
+                       st.watched.count(), o.granted.to_api_us));
     }
     if (st.wrong_size > 0) {
       ok = false;
@@ -231,15 +300,55 @@ struct checker {
            fmt::format("{}: {} of {} T->O frames lack the run/idle header the T->O format (4) asks for", name,
                        st.without_header, st.frames));
     }
-    if (auto slow = io_rate_warning(name, st, o.granted.to_api_us)) diag(diag_id::live_io_rate, to_site, *slow);
-    if (!o.close_problem.empty())
-      diag(diag_id::live_not_checked, c.from.where, fmt::format("{}: {}", name, o.close_problem));
-    row(name, sizes,
-        fmt::format("open; {} frames of {} B{}, every {:.1f} ms (API {:.1f} ms)", st.frames,
-                    st.wrong_size ? st.a_wrong_size : p.facts.input_size, p.to_run_idle ? " +run/idle" : "",
-                    st.mean_interval_us / 1000, o.granted.to_api_us / 1000.0),
-        ok ? verdict::match : verdict::mismatch);
+    if (whole_watch)
+      if (auto slow = io_rate_warning(name, st, o.granted.to_api_us)) diag(diag_id::live_io_rate, to_site, *slow);
+    const auto bytes = st.wrong_size ? st.a_wrong_size : p.facts.input_size;
+    auto seen = fmt::format("open; {} frames of {} B{}, every {:.1f} ms (API {:.1f} ms)", st.frames, bytes,
+                            p.to_run_idle ? " +run/idle" : "", st.mean_interval_us / 1000, o.granted.to_api_us / 1000.0);
+    if (!whole_watch)
+      seen += fmt::format("; {} after {:.1f} s", o.interrupted ? "interrupted" : "device lost",
+                          st.watched.count() / 1000.0);
+    // Cut short, what was seen can still have matched.
+    const bool seen_enough = whole_watch || st.frames > 0 || !expects_frames;
+    row(name, sizes, seen, !ok ? verdict::mismatch : seen_enough ? verdict::match : verdict::not_tried);
+    out.rows.back().io = io_summary{st.frames,
+                                    bytes,
+                                    p.to_run_idle,
+                                    st.mean_interval_us / 1000,
+                                    o.granted.to_api_us / 1000.0,
+                                    static_cast<unsigned>(st.watched.count()),
+                                    st.sent};
   }
+
+  // The run's progress, for a user who waits.
+  void step(const std::string& what) {
+    if (opt.progress) opt.progress(what);
+  }
+
+  // Once the device stopped answering or a signal came, every check left
+  // gets a row saying why it was not made. True when `check` is one.
+  bool halted(const std::string& check, const std::string& eds) {
+    if (!stop_reason.empty()) {
+      row(check, eds, stop_reason, verdict::not_tried);
+      return true;
+    }
+    if (const int sig = interruption()) {
+      out.interrupted = sig;
+      stop_reason = "not reached: interrupted";
+      row(check, eds, stop_reason, verdict::not_tried);
+      return true;
+    }
+    return false;
+  }
+
+  // The run failed during `check` (the device stopped answering, mostly):
+  // its row says so, the failure ends the run.
+  net_error lost(const net_error& e, const std::string& check, const std::string& eds) {
+    if (!check.empty()) row(check, eds, "not finished", verdict::not_tried);
+    stop_reason = "not reached";
+    return e;
+  }
+  std::string stop_reason;
 };
 
 }  // namespace
@@ -262,30 +371,32 @@ std::string_view to_string(verdict v) {
   return "?";
 }
 
+std::chrono::milliseconds io_window(const live_options& opt, std::uint32_t to_rpi_us) {
+  if (opt.io_window.count() > 0) return opt.io_window;
+  const auto ten_rpis_ms = static_cast<long long>(to_rpi_us) / 100;
+  return std::chrono::milliseconds(std::max<long long>(300, ten_rpis_ms));
+}
+
 live_report verify_live(const endpoint& device, const model::device& dev, const live_options& opt) {
   live_report out;
-  checker ck{dev, opt, out, std::nullopt};
+  checker ck(dev, opt, out);
+  ck.step(fmt::format("connecting to {}", device.text));
   auto opened = session::open(device, opt.timeout);
   if (auto* e = failed(opened)) {
     out.failure = *e;
     return out;
   }
   auto& s = std::get<session>(opened);
-  auto id = read_identity(s);
-  if (auto* e = failed(id)) {
-    out.failure = *e;
-    return out;
+  if (!ck.halted("identity", "[Device]")) {
+    ck.step("reading the identity");
+    auto id = read_identity(s);
+    if (auto* e = failed(id)) out.failure = ck.lost(*e, "identity", "[Device]");
+    else ck.identity(std::get<cip::identity>(id));
   }
-  ck.identity(std::get<cip::identity>(id));
-  if (auto e = ck.assemblies(s)) {
-    out.failure = *e;
-    return out;
-  }
+  // After a failure these only add the rows of what was not reached.
+  if (auto e = ck.assemblies(s)) out.failure = *e;
   if (opt.connections) {
-    if (auto e = ck.connections(s)) {
-      out.failure = *e;
-      return out;
-    }
+    if (auto e = ck.connections(s)) out.failure = *e;
   } else {
     for (const auto& c : dev.connections) ck.row(fmt::format("Connection{}", c.number), "", "--connections not given", verdict::not_tried);
   }

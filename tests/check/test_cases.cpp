@@ -103,8 +103,8 @@ TEST(check_cases, every_rule_has_a_triggering_case) {
       "net-image-overflow", "net-placement-overlap", "net-length-over-limit", "net-identity-duplicate",
       "verify-net-missing", "verify-net-unknown", "verify-net-identity", "verify-net-io-length",
       // A live EtherNet/IP device's answers: tests/live/ (OpENer, and a hostile server).
-      "live-identity", "live-minor-revision", "live-product-name", "live-assembly-size", "live-connection-refused",
-      "live-io-frames", "live-io-rate", "live-not-checked",
+      "live-identity", "live-minor-revision", "live-product-name", "live-assembly-size", "live-assembly-missing",
+      "live-connection-refused", "live-io-frames", "live-io-rate", "live-not-checked",
       // What OpENer cannot serve (`edsc header --stack opener`): tests/stack/ and scripts/opener-coverage.
       "opener-connection-kind", "opener-connection-path", "opener-assembly-size", "opener-run-idle",
       "opener-no-connection",

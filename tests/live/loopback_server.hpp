@@ -1,7 +1,10 @@
 #pragma once
 // A TCP server on loopback for the live tests: it plays a device, well or
 // badly, so edsc's handling of every reply can be tested without one. It
-// serves one client at a time and stops when destroyed.
+// serves one client at a time and stops when destroyed. Tests that use it
+// derive from loopback_test: each runs in a network namespace of its own
+// (tests/netns/private_loopback.hpp), so its server, the UDP port 2222 edsc
+// binds and the frames sent there meet no other test.
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <poll.h>
@@ -13,7 +16,10 @@
 #include <string>
 #include <thread>
 
+#include <gtest/gtest.h>
+
 #include "cip/encap.hpp"
+#include "netns/private_loopback.hpp"
 
 namespace edsc::live_test {
 
@@ -44,6 +50,18 @@ inline cip::bytes reply_to(const cip::bytes& req, std::uint16_t command, std::ui
 }
 
 inline void send_bytes(int s, const cip::bytes& b) { (void)::send(s, b.data(), b.size(), MSG_NOSIGNAL); }
+
+class loopback_test : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string why;
+    if (!net_.enter(why)) GTEST_SKIP() << why;
+  }
+  void TearDown() override { net_.leave(); }
+
+ private:
+  private_loopback net_;
+};
 
 class loopback_server {
  public:

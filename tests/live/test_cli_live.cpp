@@ -2,6 +2,7 @@
 // errors that need no device.
 #include <gtest/gtest.h>
 
+#include "loopback_server.hpp"
 #include "netns/run_edsc.hpp"
 #include "test_paths.hpp"
 
@@ -25,6 +26,32 @@ TEST(live_cli, usage_errors_exit_2_with_a_reason) {
       {"verify --live 127.0.0.1:0 " + eds, "bad port"},
       // Without SO_BROADCAST the kernel refuses the datagram: nothing is sent.
       {"probe 255.255.255.255 --udp --timeout 1", "is a broadcast address"},
+  };
+  for (const auto& [args, message] : cases) {
+    const auto r = run_edsc(args, 60);
+    EXPECT_EQ(r.status, 2) << args << "\n" << r.output;
+    EXPECT_NE(r.output.find(message), std::string::npos) << args << "\n" << r.output;
+  }
+}
+
+// Options that mean nothing to the run asked for are refused (exit 2, the
+// option named), never ignored; a library that cannot be read is refused
+// before the device is asked. In a namespace of its own: were a refusal
+// missing, edsc would go on and contact 127.0.0.1, which must be no one's.
+class live_cli_refusals : public loopback_test {};
+
+TEST_F(live_cli_refusals, options_that_mean_nothing_are_refused_by_name) {
+  const auto eds = quoted(std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds");
+  const auto log = quoted(std::string(EDSC_SHARED_DIR) + "/captures/rightsight-42ef-startup.tsv");
+  const std::pair<std::string, std::string> cases[] = {
+      {"verify --live 127.0.0.1 " + eds + " --capture " + log, "--capture is for CAN captures"},
+      {"verify --live 127.0.0.1 " + eds + " --mac 9", "--mac is for CAN captures"},
+      {"verify --live 127.0.0.1 " + eds + " --network net.toml", "--network is for CAN captures"},
+      {"verify --live 127.0.0.1 " + eds + " --decode " + log, "--decode is for CAN captures"},
+      {"verify --live 127.0.0.1 " + eds + " --capture " + log + " --mac 9", "--capture, --mac are for CAN captures"},
+      {"verify " + eds + " --capture " + log + " --timeout 2", "--timeout applies to a live device: it needs --live"},
+      {"verify " + eds + " --capture " + log + " --watch 2", "--watch applies to a live device: it needs --live"},
+      {"probe 127.0.0.1 --library no-such-folder", "--library no-such-folder: no such file or directory"},
   };
   for (const auto& [args, message] : cases) {
     const auto r = run_edsc(args, 60);

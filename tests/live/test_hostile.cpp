@@ -53,7 +53,7 @@ struct hostile_case {
 
 void PrintTo(const hostile_case& c, std::ostream* os) { *os << c.name; }
 
-class live_hostile : public ::testing::TestWithParam<hostile_case> {};
+class live_hostile : public loopback_test, public ::testing::WithParamInterface<hostile_case> {};
 
 TEST_P(live_hostile, ends_with_a_message_and_exit_2) {
   loopback_server server(GetParam().server);

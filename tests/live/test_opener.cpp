@@ -14,6 +14,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cip/connection_manager.hpp"
+#include "cip/message.hpp"
+#include "live/session.hpp"
+#include "netns/live_support.hpp"
 #include "netns/run_edsc.hpp"
 #include "netns/test_network.hpp"
 #include "test_paths.hpp"
@@ -42,6 +46,13 @@ class live_opener : public ::testing::Test {
     const auto r = run_edsc("edit " + quoted(path) + " --in-place --force --set " + quoted(set));
     EXPECT_EQ(r.status, 0) << r.output;
     return path;
+  }
+  // tcpdump on the device's interface into `pcap`, once it listens; its pid.
+  pid_t capture(const std::string& pcap) {
+    const auto dump = net_->spawn({"tcpdump", "-i", net_->dev_if, "--immediate-mode", "-U", "-n", "-w", pcap}, "tcpdump.log");
+    for (int i = 0; dump > 0 && i < 200 && shell("grep -q listening " + net_->dir + "/tcpdump.log").status != 0; ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    return dump;
   }
   std::unique_ptr<test_network> net_;
 };
@@ -171,6 +182,9 @@ const fault faults[] = {
      "refused the 12 bytes of configuration"},
     {"assembly_size", "Assembly.Assem100.size=16", "16,", "Assem100", "holds 32 bytes on the device, Assem100 says 16"},
     {"minor_revision_newer", "Device.MinRev=4", "MinRev = 4", "", "compatible keying refuses it too"},
+    // Assem100 gets a path of its own naming instance 101, which OpENer lacks (0x05).
+    {"assembly_missing", "Assembly.Assem100.path=\"20 04 24 65 30 03\"", "20 04 24 65 30 03", "Assem100",
+     "the device has no assembly instance 101 (0x05 path destination unknown), which Assem100 says it has"},
     {"minor_revision_refused", "Device.MinRev=4", "MinRev = 4", "", "0x0116 revision mismatch"},
     {"minor_revision_older", "Device.MinRev=1", "MinRev = 1", "", "compatible keying accepts it", 0},
     {"product_name", "Device.ProdName=\"OpENer\"", "ProdName = \"OpENer\"", "", "product name \"OpENer PC\"", 0},
@@ -178,6 +192,107 @@ const fault faults[] = {
 
 INSTANTIATE_TEST_SUITE_P(faults, live_opener_fault, ::testing::ValuesIn(faults),
                          [](const auto& info) { return std::string(info.param.name); });
+
+// An EDS whose MinRev is newer than the device's minor revision: exact and
+// compatible keying both refuse the device, so a scanner keyed from the file
+// never connects. An error at MinRev even without --connections.
+TEST_F(live_opener, a_minor_revision_newer_than_the_device_is_an_error) {
+  const auto path = faulty_copy("Device.MinRev=4");
+  const auto r = run_edsc("verify --live " + device() + " " + quoted(path) + " --color never");
+  EXPECT_EQ(r.status, 1) << r.output;
+  const auto where = path + ":" + std::to_string(line_of(path, "MinRev = 4")) + ":";
+  const auto at = r.output.find(where);
+  ASSERT_NE(at, std::string::npos) << r.output;
+  const auto message = r.output.substr(at, r.output.find('\n', at) - at);
+  EXPECT_NE(message.find(": error: the device reports revision 2.3, the EDS says 2.4: exact keying refuses it, "
+                         "compatible keying refuses it too"),
+            std::string::npos)
+      << r.output;
+  EXPECT_TRUE(message.ends_with("[live-identity]")) << message;
+}
+
+// Another scanner holds Connection1 (the test itself, from the host, with an
+// originator of its own and a timeout long enough for the run): OpENer
+// refuses edsc's Connection1 with 0x0106. That is the device being busy,
+// not the EDS being wrong: no diagnostic, a message, exit 2; Connection2
+// (input only) is still opened and checked.
+TEST_F(live_opener, an_owned_device_is_busy_not_wrong) {
+  auto to = live::resolve(device(), 44818);
+  ASSERT_FALSE(live::failed(to));
+  auto opened = live::session::open(std::get<live::endpoint>(to), std::chrono::seconds(3));
+  ASSERT_FALSE(live::failed(opened));
+  auto& owner = std::get<live::session>(opened);
+  auto fo = opener_connection1_request();
+  fo.originator_vendor = 0x1234;   // not edsc's
+  fo.originator_serial = 0x600D;
+  fo.timeout_multiplier = 7;       // x512: 15 s at 30 ms
+  const auto reply = owner.request_raw(cip::service::forward_open, cip::encode_forward_open(fo));
+  ASSERT_FALSE(live::failed(reply));
+  ASSERT_EQ(std::get<cip::reply>(reply).general, 0);
+
+  const auto r = run_edsc("verify --live " + device() + " " + quoted(opener_eds) + " --connections --color never");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_EQ(r.output.find("[live-connection-refused]"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("0 errors"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(": error: " + device() + " is busy: Connection1 not checked: the device refused it with "
+                          "0x01 connection failure, extended 0x0106 ownership conflict"),
+            std::string::npos)
+      << r.output;
+  const auto c2 = r.output.find("\nConnection2 ");
+  ASSERT_NE(c2, std::string::npos) << r.output;
+  EXPECT_TRUE(r.output.substr(c2 + 1, r.output.find('\n', c2 + 1) - c2 - 1).ends_with(" match")) << r.output;
+
+  cip::forward_close_request fc;
+  fc.connection_serial = fo.connection_serial;
+  fc.originator_vendor = fo.originator_vendor;
+  fc.originator_serial = fo.originator_serial;
+  fc.path = unhex("20 04 24 97 2C 96 2C 64");
+  (void)owner.request_raw(cip::service::forward_close, cip::encode_forward_close(fc));
+}
+
+// The Identity object's extended device status (bits 4-7 of attribute 5):
+// 6 or 7 once OpENer has had an I/O connection (it keeps saying so after
+// the connection is closed, so this tells only that one was opened).
+bool has_had_io_connection(const std::string& ip) {
+  auto to = live::resolve(ip, 44818);
+  if (live::failed(to)) return false;
+  auto s = live::session::open(std::get<live::endpoint>(to), std::chrono::seconds(1));
+  if (live::failed(s)) return false;
+  const auto id = live::read_identity(std::get<live::session>(s));
+  if (live::failed(id)) return false;
+  const auto ext = (std::get<cip::identity>(id).status >> 4) & 0xF;
+  return ext == 6 || ext == 7;
+}
+
+// Ctrl-C while edsc watches Connection1: on the wire (tcpdump on the
+// device's side, read by tshark) a Forward_Close follows, which OpENer
+// answers with success; edsc prints the checks made and exits 130.
+TEST_F(live_opener, ctrl_c_closes_the_open_connection_on_the_wire) {
+  if (shell("command -v tcpdump >/dev/null && command -v tshark >/dev/null").status != 0)
+    GTEST_SKIP() << "tcpdump or tshark is missing (Debian packages tcpdump, tshark)";
+  const auto pcap = net_->dir + "/interrupted.pcap";
+  const auto dump = capture(pcap);
+  ASSERT_GT(dump, 0);
+  edsc_child edsc({"verify", "--live", device(), opener_eds, "--connections", "--watch", "30", "--color", "never"},
+                  net_->dir + "/verify.log");
+  ASSERT_TRUE(edsc.started());
+  bool open = false;
+  for (int i = 0; i < 100 && !(open = has_had_io_connection(device())); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  ASSERT_TRUE(open) << "OpENer never reported an I/O connection";
+  edsc.signal(SIGINT);
+  const auto r = edsc.finish();
+  EXPECT_EQ(r.status, 130) << r.output;
+  EXPECT_NE(r.output.find("\nVendCode "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("; interrupted after "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("interrupted by SIGINT"), std::string::npos) << r.output;
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  net_->stop(dump, SIGINT);
+  // Forward_Close (service 0x4E): edsc's request (0) and OpENer's reply (1), status 0.
+  const auto fc = shell("tshark -r " + quoted(pcap) + " -Y 'cip.sc == 0x4e' -T fields -e cip.rr -e cip.genstat 2>/dev/null");
+  EXPECT_NE(fc.out.find("0\t\n"), std::string::npos) << fc.out;
+  EXPECT_NE(fc.out.find("1\t0"), std::string::npos) << fc.out;
+}
 
 // The identity fields as tshark prints them (-T fields, separator ",").
 std::string tshark_identity(const nlohmann::json& i) {
@@ -192,10 +307,8 @@ TEST_F(live_opener, a_captured_session_decodes_in_tshark_with_the_same_identity)
   if (shell("command -v tcpdump >/dev/null && command -v tshark >/dev/null").status != 0)
     GTEST_SKIP() << "tcpdump or tshark is missing (Debian packages tcpdump, tshark)";
   const auto pcap = net_->dir + "/session.pcap";
-  const auto dump = net_->spawn({"tcpdump", "-i", net_->dev_if, "--immediate-mode", "-U", "-n", "-w", pcap}, "tcpdump.log");
+  const auto dump = capture(pcap);
   ASSERT_GT(dump, 0);
-  for (int i = 0; i < 200 && shell("grep -q listening " + net_->dir + "/tcpdump.log").status != 0; ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
   const auto probe = run_edsc("probe " + device() + " --udp --timeout 5 --format json");
   ASSERT_EQ(probe.status, 0) << probe.output;
   const auto verify = run_edsc("verify --live " + device() + " " + quoted(opener_eds) + " --connections");

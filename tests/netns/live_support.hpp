@@ -1,7 +1,10 @@
 #pragma once
 // Helpers of the live tests: hex strings, a pcap writer, running commands.
-#include <cstdint>
+#include <fcntl.h>
+#include <spawn.h>
 #include <sys/wait.h>
+
+#include <cstdint>
 
 #include <cstdio>
 #include <string>
@@ -9,6 +12,8 @@
 
 #include "cip/bytes.hpp"
 #include "cip/connection_manager.hpp"
+
+extern char** environ;
 
 namespace edsc::live_test {
 
@@ -74,6 +79,25 @@ inline shell_result shell(const std::string& cmd) {
   const int st = ::pclose(p);
   r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
   return r;
+}
+
+// Starts `argv` (argv[0] found on PATH) with standard input from /dev/null
+// and standard output and error into the file `log`, in the folder `cwd`
+// unless it is empty; its pid, or -1.
+inline pid_t spawn_logged(std::vector<std::string> argv, const std::string& log, const std::string& cwd = {}) {
+  std::vector<char*> args;
+  for (auto& a : argv) args.push_back(a.data());
+  args.push_back(nullptr);
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&fa, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&fa, 1, 2);
+  if (!cwd.empty()) posix_spawn_file_actions_addchdir_np(&fa, cwd.c_str());
+  pid_t pid = -1;
+  if (posix_spawnp(&pid, args[0], &fa, nullptr, args.data(), environ) != 0) pid = -1;
+  posix_spawn_file_actions_destroy(&fa);
+  return pid;
 }
 
 }  // namespace edsc::live_test

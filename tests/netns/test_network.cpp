@@ -10,9 +10,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <regex>
@@ -21,8 +24,6 @@
 
 #include "netns/live_support.hpp"
 
-extern char** environ;
-
 namespace edsc::live_test {
 
 namespace {
@@ -30,27 +31,97 @@ namespace {
 namespace fs = std::filesystem;
 bool run(const std::string& cmd) { return shell(cmd + " >/dev/null 2>&1").status == 0; }
 
-// Namespaces and links of test processes that are gone (killed mid-test).
-void remove_stale(const network_options& opt) {
-  const auto list = shell("ip netns list 2>/dev/null").out;
-  const std::regex name(opt.ns_prefix + "([0-9]+)(-([0-9]+))?");
-  for (std::sregex_iterator it(list.begin(), list.end(), name), end; it != end; ++it) {
-    const auto pid = std::stoi((*it)[1]);
-    if (::kill(pid, 0) == 0 || errno == EPERM) continue;
-    run("ip netns del " + it->str());
-    run("ip link del " + opt.link_prefix + std::to_string(pid) + (*it)[3].str() + "h");
+// The claims and the lock that serialises building and tearing down
+// networks (and the decision to add or remove the route) on this machine.
+const char* const lock_dir = "/run/edsc-test-net";
+std::string claim_path(int subnet) { return std::string(lock_dir) + "/subnet-" + std::to_string(subnet) + ".lock"; }
+
+// flock() on a file of the lock folder: the open descriptor holding it, or -1.
+int lock_file(const std::string& path, bool wait) {
+  const int fd = ::open(path.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0600);
+  if (fd < 0) return -1;
+  while (::flock(fd, LOCK_EX | (wait ? 0 : LOCK_NB)) != 0) {
+    if (errno == EINTR) continue;
+    ::close(fd);
+    return -1;
   }
+  return fd;
 }
 
-// A /30 no interface of this host uses yet (the caller holds the lock).
-int free_subnet(const network_options& opt) {
+struct held_lock {
+  int fd;
+  ~held_lock() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+// The /30 numbers some interface of this host has an address in.
+std::set<int> subnets_in_use() {
   const auto addrs = shell("ip -o -4 addr show 2>/dev/null").out;
   std::set<int> used;
   const std::regex a(R"(198\.51\.100\.([0-9]+))");
   for (std::sregex_iterator it(addrs.begin(), addrs.end(), a), end; it != end; ++it) used.insert(std::stoi((*it)[1]) / 4);
-  for (int i = opt.first_subnet; i <= opt.last_subnet; ++i)
-    if (!used.count(i)) return i;
+  return used;
+}
+
+// What a holder of `subnet` that died left behind, by the names it used.
+void remove_leftovers(const network_options& opt, int subnet) {
+  const auto n = std::to_string(subnet);
+  run("ip netns del " + opt.ns_prefix + n);
+  run("ip link del " + opt.link_prefix + n + "h");
+  std::error_code ec;
+  fs::remove_all(fs::temp_directory_path() / (opt.ns_prefix + n), ec);
+}
+
+// The first /30 of the range no one holds and no interface uses: its
+// number, with the lock file that claims it in `claim`; -1 when none is free.
+int claim_subnet(const network_options& opt, int& claim) {
+  const auto used = subnets_in_use();
+  for (int i = std::max(opt.first_subnet, 1); i <= std::min(opt.last_subnet, 63); ++i) {
+    const int fd = lock_file(claim_path(i), false);
+    if (fd < 0) continue;
+    remove_leftovers(opt, i);
+    // Still in use after that: an address someone else gave an interface.
+    if (used.count(i) && subnets_in_use().count(i)) {
+      ::close(fd);
+      continue;
+    }
+    claim = fd;
+    return i;
+  }
   return -1;
+}
+
+// Marks the route edsc's tests add, so that only it is ever removed.
+const char* const route = "unreachable 198.51.100.0/24 proto 69";
+
+// Adds the route unless one is there, then checks that the unused address
+// has no route from the host nor from the namespace (`ip route get` fails
+// for an unreachable or blackhole route and where none leads there); why
+// not, or "".
+std::string keep_packets_in(const test_network& n) {
+  run(std::string("ip route add ") + route);
+  for (const auto& [where, prefix] : {std::pair<std::string, std::string>{"this host", ""},
+                                      {"the namespace " + n.ns, "ip netns exec " + n.ns + " "}}) {
+    const auto r = shell(prefix + "ip route get " + unused_test_address + " 2>&1");
+    if (r.status == 0)
+      return std::string("a test packet to ") + unused_test_address + " (TEST-NET-2, in no test network) would " +
+             "leave " + where + ": `ip route get` says " + r.out +
+             "(a route for 198.51.100.0/24 that is not the tests' own overrides theirs)";
+  }
+  return {};
+}
+
+// No network holds a /30 any more: the route goes (the caller holds the lock).
+void drop_route_when_last() {
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(lock_dir, ec)) {
+    if (e.path().filename().string().rfind("subnet-", 0) != 0) continue;
+    const int fd = lock_file(e.path().string(), false);
+    if (fd < 0) return;  // held by a network that still exists
+    ::close(fd);
+  }
+  run(std::string("ip route del ") + route);
 }
 
 bool tcp_answers(const std::string& ip, int port) {
@@ -75,32 +146,27 @@ std::unique_ptr<test_network> test_network::make(std::string& why, const network
     why = "`ip` (Debian iproute2) is missing";
     return nullptr;
   }
-  // One process at a time picks a subnet and builds its network.
-  const int lock = ::open("/tmp/edsc-live-net.lock", O_CREAT | O_RDWR | O_CLOEXEC, 0600);
-  if (lock >= 0) ::flock(lock, LOCK_EX);
-  struct unlock_at_end {
-    int fd;
-    ~unlock_at_end() {
-      if (fd >= 0) ::close(fd);
-    }
-  } unlock{lock};
-  remove_stale(opt);
+  std::error_code ec;
+  fs::create_directories(lock_dir, ec);
+  // Declared first, destroyed last: a half-built network is torn down
+  // after the lock is let go (its destructor takes the lock itself).
   std::unique_ptr<test_network> n(new test_network);
-  // Several networks of one process (the sim sweep) differ by a sequence number.
-  static int made = 0;
-  const auto seq = made++;
-  const auto pid = std::to_string(::getpid());
-  const auto tail = seq == 0 ? std::string() : std::to_string(seq);
-  n->ns = opt.ns_prefix + pid + (seq == 0 ? std::string() : "-" + tail);
-  n->host_if = opt.link_prefix + pid + tail + "h";
-  n->dev_if = opt.link_prefix + pid + tail + "d";
-  const int subnet = free_subnet(opt);
-  if (subnet < 0) {
-    why = "no free /30 of 198.51.100.0/24 in this folder's range on this host";
+  held_lock building{lock_file(std::string(lock_dir) + "/build.lock", true)};
+  if (building.fd < 0) {
+    why = std::string("cannot lock ") + lock_dir + "/build.lock: " + std::strerror(errno);
     return nullptr;
   }
-  n->host_ip = "198.51.100." + std::to_string(subnet * 4 + 1);
-  n->device_ip = "198.51.100." + std::to_string(subnet * 4 + 2);
+  n->subnet = claim_subnet(opt, n->claim_);
+  if (n->subnet < 0) {
+    why = "every /30 of 198.51.100.0/24 in this folder's range is taken on this host";
+    return nullptr;
+  }
+  const auto tag = std::to_string(n->subnet);
+  n->ns = opt.ns_prefix + tag;
+  n->host_if = opt.link_prefix + tag + "h";
+  n->dev_if = opt.link_prefix + tag + "d";
+  n->host_ip = "198.51.100." + std::to_string(n->subnet * 4 + 1);
+  n->device_ip = "198.51.100." + std::to_string(n->subnet * 4 + 2);
   n->dir = (fs::temp_directory_path() / n->ns).string();
   fs::create_directories(n->dir);
   const std::string in_ns = "ip netns exec " + n->ns + " ";
@@ -119,33 +185,29 @@ std::unique_ptr<test_network> test_network::make(std::string& why, const network
       why = "cannot build the test network (`" + s + "` failed): namespaces are not available here";
       return nullptr;  // the destructor removes what was made
     }
+  if (const auto leak = keep_packets_in(*n); !leak.empty()) {
+    ADD_FAILURE() << leak;
+    why = leak;
+    return nullptr;
+  }
   return n;
 }
 
 test_network::~test_network() {
   while (!children_.empty()) stop(children_.back());
+  held_lock building{lock_file(std::string(lock_dir) + "/build.lock", true)};
   if (!ns.empty()) run("ip netns del " + ns);
   if (!host_if.empty()) run("ip link del " + host_if);
   std::error_code ec;
   if (!dir.empty()) fs::remove_all(dir, ec);
+  if (claim_ >= 0) ::close(claim_);
+  drop_route_when_last();
 }
 
 pid_t test_network::spawn(const std::vector<std::string>& argv, const std::string& log_name) {
   std::vector<std::string> full = {"ip", "netns", "exec", ns};
   full.insert(full.end(), argv.begin(), argv.end());
-  std::vector<char*> args;
-  for (auto& a : full) args.push_back(a.data());
-  args.push_back(nullptr);
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
-  const auto log = dir + "/" + log_name;
-  posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&fa, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&fa, 1, 2);
-  posix_spawn_file_actions_addchdir_np(&fa, dir.c_str());
-  pid_t pid = -1;
-  if (posix_spawnp(&pid, "ip", &fa, nullptr, args.data(), environ) != 0) pid = -1;
-  posix_spawn_file_actions_destroy(&fa);
+  const auto pid = spawn_logged(std::move(full), dir + "/" + log_name, dir);
   if (pid > 0) children_.push_back(pid);
   return pid;
 }

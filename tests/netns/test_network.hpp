@@ -1,11 +1,19 @@
 #pragma once
 // A device in its own network namespace behind a veth pair, with a /30 of
 // TEST-NET-2 (198.51.100.0/24) of its own (ETHERNETIP_LIVE.md §2). Shared by
-// tests/live and tests/stack; each folder names its own and takes /30s from
-// its own half of the range. Names
-// carry the test process id, so parallel tests do not meet and a later run
-// removes what a killed one left. The destructor stops the device and
-// removes the namespace and the link, also when the test fails.
+// tests/live, tests/sim and tests/stack.
+//
+// A /30 is claimed by holding a lock file of its own (under /run) for the
+// network's whole life: any two networks of this machine, made by one test
+// run or by several at once, never get the same one, and the kernel lets go
+// of the claim when a killed test dies. Names are the suite's prefix and the
+// /30's number, so whoever claims a /30 next removes what a killed holder
+// left. While any network exists, the host routes 198.51.100.0/24 nowhere
+// (an `unreachable` route that each network's own /30 overrides): a packet
+// of a test to another TEST-NET-2 address fails at once instead of leaving
+// the machine; make() checks this before it returns. The destructor stops
+// the device and removes the namespace and the link, also when the test
+// fails.
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,20 +22,26 @@
 
 namespace edsc::live_test {
 
-// Which names and addresses a suite uses, so suites running at once never
-// meet: tests/live takes the defaults, tests/sim its own prefix and
-// 198.51.100.64/26 (/30 numbers 16-31).
+// Which names and addresses a suite uses: tests/live takes the defaults,
+// tests/sim its own prefix and /30s 16-31, tests/stack 32-62, tests/netns
+// 63. The locks keep networks apart; the ranges keep each suite's names its
+// own.
 struct network_options {
-  std::string ns_prefix = "edsc-live-";  // namespace: prefix, test pid, -sequence
-  std::string link_prefix = "el";        // veth: prefix, pid, sequence, h/d (at most 15 characters)
-  // /30 numbers of 198.51.100.0/24: tests/live 1-15, tests/sim 16-31,
-  // tests/stack 32-62, so suites running at once never share one.
+  std::string ns_prefix = "edsc-live-";  // namespace: prefix and /30 number
+  std::string link_prefix = "el";        // veth: prefix, /30 number, h/d
+  // /30 numbers of 198.51.100.0/24 (1-63; 0 is never given out: it holds
+  // the address no test may reach).
   int first_subnet = 1, last_subnet = 15;
 };
 
+// A TEST-NET-2 address outside every test network: unreachable while any exists.
+inline constexpr const char* unused_test_address = "198.51.100.1";
+
 class test_network {
  public:
-  // Null with `why` set when namespaces cannot be made here (not root, no `ip`).
+  // Null with `why` set when namespaces cannot be made here (not root, no `ip`)
+  // or every /30 of the range is taken. When a packet to another TEST-NET-2
+  // address could leave the machine, the test fails (besides the null).
   static std::unique_ptr<test_network> make(std::string& why, const network_options& opt = {});
   ~test_network();
   test_network(const test_network&) = delete;
@@ -45,10 +59,12 @@ class test_network {
   void stop(pid_t pid, int first_signal = 15);
 
   std::string ns, host_if, dev_if, host_ip, device_ip, dir;
+  int subnet = -1;  // the /30's number: host .4n+1, device .4n+2
 
  private:
   test_network() = default;
   std::vector<pid_t> children_;
+  int claim_ = -1;  // the lock file held while the network exists
 };
 
 }  // namespace edsc::live_test
