@@ -13,7 +13,6 @@
 #include "driver/output.hpp"
 #include "io/collect_inputs.hpp"
 #include "io/output_target.hpp"
-#include "io/write_file.hpp"
 
 namespace edsc::driver {
 

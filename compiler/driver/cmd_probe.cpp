@@ -11,13 +11,14 @@
 
 #include "check/check_file.hpp"
 #include "cip/status.hpp"
+#include "diag/plural.hpp"
 #include "driver/choice.hpp"
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
 #include "driver/verify_live.hpp"
 #include "io/collect_inputs.hpp"
+#include "io/output_target.hpp"
 #include "live/plan.hpp"
-#include "io/write_file.hpp"
 #include "live/probe.hpp"
 #include "live/session.hpp"
 #include "live/upload.hpp"
@@ -100,8 +101,9 @@ std::string render_probe_text(const probe_cli& cli, const live::probe_result& r,
   return out;
 }
 
-// --upload-eds FILE: the device's own EDS from its File object, written
-// atomically; the bytes written, or the problem in words.
+// --upload-eds FILE: the device's own EDS from its File object, written by
+// the output policy (io/output_target.hpp) as every output is; the bytes
+// written, or the problem in words.
 std::variant<std::size_t, std::string> upload_eds(const probe_cli& cli, const live::endpoint& to,
                                                   std::chrono::milliseconds timeout) {
   auto opened = live::session::open(to, timeout);
@@ -111,7 +113,8 @@ std::variant<std::size_t, std::string> upload_eds(const probe_cli& cli, const li
   s.close();
   if (auto* e = live::failed(file)) return "upload of the EDS from the device: " + e->message;
   const auto& bytes = std::get<cip::bytes>(file);
-  if (auto e = io::write_atomically(cli.upload_eds, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size())))
+  std::fflush(stdout);
+  if (auto e = io::write_output(cli.upload_eds, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size())))
     return e->message;
   return bytes.size();
 }
@@ -186,12 +189,14 @@ int run_probe(const probe_cli& cli) {
       j["eds_upload"] = {{"path", cli.upload_eds}, {"size", n}};
       text = j.dump(2) + "\n";
     } else {
-      text += fmt::format("eds upload      {} bytes from File object instance 0x{:X} to {}\n", n, live::eds_file_instance,
-                          cli.upload_eds);
+      text += fmt::format("eds upload      {} from File object instance 0x{:X} to {}\n", plural(n, "byte"),
+                          live::eds_file_instance, io::is_stdout(cli.upload_eds) ? "standard output" : cli.upload_eds);
     }
   }
-  if (!write_all(stdout, text)) return exit_failure;
-  std::fflush(stdout);
+  // The EDS on standard output keeps it clean: the report goes to standard error.
+  std::FILE* report = io::is_stdout(cli.upload_eds) ? stderr : stdout;
+  if (!write_all(report, text)) return exit_failure;
+  std::fflush(report);
   if (uploaded && std::holds_alternative<std::string>(*uploaded)) {
     print_error(std::get<std::string>(*uploaded));
     return exit_failure;

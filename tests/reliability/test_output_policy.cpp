@@ -298,5 +298,37 @@ TEST_F(OutputPolicy, StreamNamesWriteToTheOpenDescriptor) {
   EXPECT_NE(r.output.find("#define EDS_VENDOR_ID"), std::string::npos) << r.output;
 }
 
+// The raw atomic write is internal to compiler/io (output_target.cpp): no
+// other source of the compiler opens a file for writing, renames or copies
+// one; every writer goes through io::write_output and its policy.
+TEST(OutputPolicySources, NothingOutsideIoWritesAFileItself) {
+  const std::vector<std::string> raw{"ofstream",  "std::fstream", "fopen(",       "O_WRONLY",      "O_RDWR",
+                                     "O_CREAT",   "O_TRUNC",      "creat(",       "mkstemp",       "::rename(",
+                                     "std::rename(", "fs::rename(", "filesystem::rename(", "copy_file", "fs::copy(",
+                                     "filesystem::copy(", "write_atomically", "write_fully", "io/write_file.hpp"};
+  const auto compiler = fs::path(EDSC_PROJECT_DIR) / "compiler";
+  std::size_t files = 0;
+  for (const auto& e : fs::recursive_directory_iterator(compiler)) {
+    const auto rel = fs::relative(e.path(), compiler).string();
+    if (!e.is_regular_file() || rel.starts_with("deps/")) continue;
+    if (e.path().extension() != ".cpp" && e.path().extension() != ".hpp") continue;
+    ++files;
+    const bool io = rel.starts_with("io/");
+    std::istringstream lines(read_bytes(e.path()));
+    int n = 0;
+    for (std::string line; std::getline(lines, line);) {
+      ++n;
+      for (const auto& r : raw) {
+        // Inside io, only its own implementation may name the raw write.
+        if (io && e.path().extension() == ".cpp") continue;
+        if (line.find(r) != std::string::npos)
+          ADD_FAILURE() << "compiler/" << rel << ":" << n << " uses " << r
+                        << "; write through io::write_output (io/output_target.hpp)\n  " << line;
+      }
+    }
+  }
+  EXPECT_GE(files, 100u);
+}
+
 }  // namespace
 }  // namespace edsc::reliability_test
