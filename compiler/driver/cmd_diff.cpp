@@ -62,14 +62,15 @@ int run_diff(const diff_cli& cli) {
 void register_diff(CLI::App& app, command_action& run) {
   auto cli = std::make_shared<diff_cli>();
   auto* cmd = app.add_subcommand("diff", "Compare two EDS files by meaning and say what breaks a configured network");
-  cmd->add_option("old", cli->before, "The EDS file a network was configured with")->required();
-  cmd->add_option("new", cli->after, "The new EDS file")->required();
+  takes(cmd->add_option("old", cli->before, "The EDS file a network was configured with"), arg_kind::eds)->required();
+  takes(cmd->add_option("new", cli->after, "The new EDS file"), arg_kind::eds)->required();
   add_color_option(cmd, cli->color);
   add_choice(cmd, "--format", cli->format, {"text", "json"},
              "Output format: text (the default) or json (docs/diff-json.schema.json)");
   add_choice(cmd, "--keying", cli->keying, {{"compatible", diff::keying::compatible}, {"exact", diff::keying::exact}},
              "How the scanners check revisions: compatible (the default; a raised minor revision is additive) or "
              "exact (any revision change is breaking)");
+  add_example(cmd, "edsc diff old.eds new.eds", "what a new revision breaks");
   cmd->callback([&run, cli] { run = [cli] { return run_diff(*cli); }; });
 }
 

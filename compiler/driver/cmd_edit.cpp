@@ -115,9 +115,11 @@ void register_edit(CLI::App& app, command_action& run) {
                     "[Variant_IO_Info]"}},
   };
   for (const auto& [name, what] : ops) {
-    auto* o = cmd->add_option(name, opt->values[what.first], what.second)->allow_extra_args(false);
+    auto* o = takes(cmd->add_option(name, opt->values[what.first], what.second), arg_kind::text)->allow_extra_args(false);
     opt->kinds[o] = what.first;
   }
+  add_example(cmd, "edsc edit device.eds --set Device.MajRev=2 --in-place", "change one field, nothing else");
+  add_example(cmd, "edsc edit device.eds --resize Input1=3 -o new.eds", "give a DeviceNet input 3 bytes");
   cmd->callback([&run, opt, cmd] {
     // Operations run in the order they were written on the command line.
     std::map<op_kind, std::size_t> next;

@@ -59,8 +59,10 @@ void register_fix(CLI::App& app, command_action& run) {
   auto opt = std::make_shared<fix_options>();
   auto* cmd = app.add_subcommand("fix", "Apply every certain fix-it of the checker; report what is left");
   opt->dest.add_options(*cmd, "The EDS file to repair");
-  cmd->add_option("-W", opt->warning_flags, "Diagnostic policy, as for check (e.g. -Wpedantic)")->allow_extra_args(false);
+  takes(cmd->add_option("-W", opt->warning_flags, "Diagnostic policy, as for check (e.g. -Wpedantic)"), arg_kind::warning)
+      ->allow_extra_args(false);
   cmd->add_flag("-q,--quiet", opt->quiet, "List the repairs only, not the findings left");
+  add_example(cmd, "edsc fix --in-place device.eds", "apply the certain repairs");
   cmd->callback([&run, opt] { run = [opt] { return run_fix(*opt); }; });
 }
 

@@ -71,35 +71,45 @@ void register_new(CLI::App& app, command_action& run) {
   auto opt = std::make_shared<new_options>();
   auto& s = opt->spec;
   auto* cmd = app.add_subcommand("new", "Write a complete, valid, formatted EDS for a new device");
-  auto* from = cmd->add_option("--from", opt->from, "Read the device description from a JSON file (docs/authoring.md)");
-  auto* vendor = cmd->add_option("--vendor", s.vendor, "Vendor ID (ODVA-assigned; 0-65535)");
-  auto* type = cmd->add_option("--product-type", s.product_type, "Product type (7 discrete I/O, 100 vendor specific...)");
-  auto* code = cmd->add_option("--product-code", s.product_code, "Product code (0-65535)");
-  auto* name = cmd->add_option("--name", s.name, "Product name");
+  auto* from = takes(cmd->add_option("--from", opt->from, "Read the device description from a JSON file (docs/authoring.md)"),
+                     arg_kind::json);
+  const std::uint32_t u16 = 65535;
+  auto* vendor = add_number(cmd, "--vendor", s.vendor, 0u, u16, "Vendor ID (ODVA-assigned)");
+  auto* type = add_number(cmd, "--product-type", s.product_type, 0u, u16, "Product type (7 discrete I/O, 100 vendor specific...)");
+  auto* code = add_number(cmd, "--product-code", s.product_code, 0u, u16, "Product code");
+  auto* name = takes(cmd->add_option("--name", s.name, "Product name"), arg_kind::text);
   for (auto* o : {vendor, type, code, name}) o->excludes(from);
-  cmd->add_option("--vendor-name", s.vendor_name, "Vendor name (default: \"Vendor <id>\")");
-  cmd->add_option("--product-type-name", s.product_type_name, "Product type text (default: the usual name)");
-  cmd->add_option("--catalog", s.catalog, "Catalog number");
-  cmd->add_option("--description", s.description, "[File] DescText");
-  cmd->add_option("--revision", s.revision, "Device revision major.minor (default 1.1)");
+  auto text = [cmd](const std::string& option, std::string& value, const std::string& help) {
+    return takes(cmd->add_option(option, value, help), arg_kind::text);
+  };
+  text("--vendor-name", s.vendor_name, "Vendor name (default: \"Vendor <id>\")");
+  text("--product-type-name", s.product_type_name, "Product type text (default: the usual name)");
+  text("--catalog", s.catalog, "Catalog number");
+  text("--description", s.description, "[File] DescText");
+  text("--revision", s.revision, "Device revision major.minor (default 1.1)");
   add_choice(cmd, "--network", s.network, {"devicenet", "ethernetip"}, "The device's network (default: devicenet)");
-  cmd->add_option("--input-bytes", s.input, "Input bytes (produced by the device)");
-  cmd->add_option("--output-bytes", s.output, "Output bytes (consumed by the device)");
+  add_number(cmd, "--input-bytes", s.input, 0u, u16, "Input bytes (produced by the device)");
+  add_number(cmd, "--output-bytes", s.output, 0u, u16, "Output bytes (consumed by the device)");
   // The spelling before --input-bytes, kept for scripts (hidden). The old
   // --output N became -o's long form, which every other command uses.
-  cmd->add_option("--input", s.input)->group("");
-  cmd->add_option("--connections", s.connections, "DeviceNet connections, first is the default: poll,strobe,cos,cyclic")
+  add_number(cmd, "--input", s.input, 0u, u16, "")->group("");
+  takes(cmd->add_option("--connections", s.connections,
+                        "DeviceNet connections, first is the default: poll,strobe,cos,cyclic"),
+        arg_kind::text)
       ->delimiter(',');
-  cmd->add_option("--input-name", s.input_name, "Name of the input data");
-  cmd->add_option("--output-name", s.output_name, "Name of the output data");
-  cmd->add_option("--input-help", s.input_help, "Help text of the input data");
-  cmd->add_option("--output-help", s.output_help, "Help text of the output data");
-  cmd->add_option("--date", s.date, "Creation date mm-dd-yyyy (default: today), for reproducible builds");
-  cmd->add_option("--time", s.time, "Creation time hh:mm:ss (default: 00:00:00 with --date, else now)");
+  text("--input-name", s.input_name, "Name of the input data");
+  text("--output-name", s.output_name, "Name of the output data");
+  text("--input-help", s.input_help, "Help text of the input data");
+  text("--output-help", s.output_help, "Help text of the output data");
+  text("--date", s.date, "Creation date mm-dd-yyyy (default: today), for reproducible builds");
+  text("--time", s.time, "Creation time hh:mm:ss (default: 00:00:00 with --date, else now)");
   add_choice(cmd, "--eol", opt->eol, {"lf", "crlf"}, "Line endings (default: lf)");
-  cmd->add_option("-o,--output", opt->output, "Write the file here ('-': standard output, the default)");
+  takes(cmd->add_option("-o,--output", opt->output, "Write the file here ('-': standard output, the default)"),
+        arg_kind::output);
   cmd->add_option("--output-file", opt->output)->group("");  // -o's old long form (hidden)
   cmd->add_flag("--force", opt->force, "Write even when the result has errors");
+  add_example(cmd, "edsc new --vendor 65535 --product-type 7 --product-code 2 --name 'Sensor' --input-bytes 3 -o sensor.eds",
+              "start the EDS of a new DeviceNet node");
   cmd->callback([&run, opt, vendor, type, code, name, from] {
     if (from->count() == 0) {
       for (auto* o : {vendor, type, code, name})

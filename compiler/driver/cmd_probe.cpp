@@ -210,18 +210,22 @@ void register_probe(CLI::App& app, command_action& run) {
   auto cli = std::make_shared<probe_cli>();
   auto* cmd = app.add_subcommand(
       "probe", "Ask a running EtherNet/IP device who it is and how large its assemblies are (docs/live.md)");
-  cmd->add_option("host", cli->host, "The device's address (only this address is contacted)")->required();
-  cmd->add_option("--library", cli->library, "A folder of EDS files: list those that describe the device, with "
-                                             "the keying verdict (exact, compatible, none)")
+  takes(cmd->add_option("host", cli->host, "The device's address (only this address is contacted)"), arg_kind::host)
+      ->required();
+  takes(cmd->add_option("--library", cli->library, "A folder of EDS files: list those that describe the device, with "
+                                                   "the keying verdict (exact, compatible, none)"),
+        arg_kind::dir)
       ->type_name("DIR");
   add_choice(cmd, "--format", cli->format, {"text", "json"}, "Output format: text (the default) or json");
-  cmd->add_option("--timeout", cli->timeout_s, "Seconds to wait for each answer (default 3)")
-      ->check(CLI::Range(0.05, 600.0).description(""))
-      ->type_name("S");
+  add_seconds(cmd, "--timeout", cli->timeout_s, 0.05, 600.0, "Seconds to wait for each answer (default 3)");
   cmd->add_flag("--udp", cli->udp, "Ask the identity by UDP ListIdentity (unicast) instead of TCP");
-  cmd->add_option("--upload-eds", cli->upload_eds,
-                  "Upload the device's own EDS from its File object (class 0x37, instance 0xC8) into FILE")
+  takes(cmd->add_option("--upload-eds", cli->upload_eds,
+                        "Upload the device's own EDS from its File object (class 0x37, instance 0xC8) into FILE "
+                        "('-': standard output, the report then going to standard error)"),
+        arg_kind::output)
       ->type_name("FILE");
+  add_example(cmd, "edsc probe 192.168.1.20 --library eds/", "who the device is, and which EDS files describe it");
+  add_example(cmd, "edsc probe 192.168.1.20 --upload-eds device.eds", "save the EDS the device carries");
   cmd->callback([&run, cli] { run = [cli] { return run_probe(*cli); }; });
 }
 

@@ -1,7 +1,5 @@
 #include "driver/manpage.hpp"
 
-#include <map>
-
 #include <fmt/format.h>
 
 #include "diag/catalogue.hpp"
@@ -30,43 +28,6 @@ std::string page_name(const cli_command& c) {
   for (const char ch : c.path) name += ch == ' ' ? '-' : ch;
   if (!c.path.empty()) name.insert(4, "-");
   return name;
-}
-
-struct example {
-  const char* command;
-  const char* what;
-};
-
-// A few typical uses per command, as a user would type them.
-const std::map<std::string, std::vector<example>>& examples() {
-  static const std::map<std::string, std::vector<example>> table{
-      {"check",
-       {{"edsc check device.eds", "check one file"},
-        {"edsc check --format sarif library/ > edsc.sarif", "check a folder for code scanning in CI"},
-        {"edsc check -Werror -Wno-error=io-info device.eds", "fail on warnings, except those of one group"}}},
-      {"rules", {{"edsc rules", "list every diagnostic"}, {"edsc rules duplicate-entry", "explain one"}}},
-      {"edit",
-       {{"edsc edit device.eds --set Device.MajRev=2 --in-place", "change one field, nothing else"},
-        {"edsc edit device.eds --resize Input1=3 -o new.eds", "give a DeviceNet input 3 bytes"}}},
-      {"fix", {{"edsc fix --in-place device.eds", "apply the certain repairs"}}},
-      {"fmt",
-       {{"edsc fmt --in-place device.eds", "lay the file out canonically"},
-        {"edsc fmt --check device.eds", "fail when it is not (CI)"}}},
-      {"new",
-       {{"edsc new --vendor 65535 --product-type 7 --product-code 2 --name 'Sensor' --input-bytes 3 -o sensor.eds",
-         "start the EDS of a new DeviceNet node"}}},
-      {"dump", {{"edsc dump device.eds | jq .identity", "read the typed model"}}},
-      {"header", {{"edsc header device.eds -o device_eds.h", "the header firmware compiles against"}}},
-      {"verify", {{"edsc verify device.eds --capture startup.log", "compare a CAN capture with the EDS"}}},
-      {"lsp", {{"edsc lsp", "started by an editor, not by hand"}}},
-      {"net check", {{"edsc net check plant.toml", "judge a DeviceNet network"}}},
-      {"net map", {{"edsc net map plant.toml --format svg -o map.svg", "draw the scanner's images"}}},
-      {"doc",
-       {{"edsc doc device.eds -o device.html", "a datasheet"}, {"edsc doc library/ -o site/", "a site for a library"}}},
-      {"diff", {{"edsc diff old.eds new.eds", "what a new revision breaks"}}},
-      {"completions", {{"edsc completions bash > ~/.local/share/bash-completion/completions/edsc", "install bash's"}}},
-  };
-  return table;
 }
 
 void add_synopsis(const cli_command& c, std::string& out) {
@@ -106,11 +67,11 @@ const char* exit_status =
     ".TP\n2\nUsage error or I/O failure: a bad option, a missing or unreadable file, an output that would "
     "overwrite an input.\n";
 
+// What each command registered (cli_model.hpp, add_example).
 void add_examples(const cli_command& c, std::string& out) {
-  const auto it = examples().find(c.path);
-  if (it == examples().end()) return;
+  if (c.examples.empty()) return;
   out += ".SH EXAMPLES\n";
-  for (const auto& e : it->second) {
+  for (const auto& e : c.examples) {
     std::string what = e.what;
     what[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(what[0])));
     out += fmt::format(".TP\n.B {}\n{}.\n", roff(e.command), roff(what));

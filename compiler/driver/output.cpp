@@ -45,13 +45,15 @@ void add_report_options(CLI::App* cmd, color_mode& color, report_format& format,
   add_choice(cmd, "--format", format,
              {{"text", report_format::text}, {"json", report_format::json}, {"sarif", report_format::sarif}},
              "Report format: text (the default), json, sarif (SARIF 2.1.0)");
-  cmd->add_option("-W", warning_flags,
-                  "-Werror, -W<id|group>, -Wno-<id|group>, -Werror=<id|group>, -Wno-error=<id|group>")
+  takes(cmd->add_option("-W", warning_flags,
+                        "-Werror, -W<id|group>, -Wno-<id|group>, -Werror=<id|group>, -Wno-error=<id|group>"),
+        arg_kind::warning)
       ->allow_extra_args(false);
 }
 
 void add_stdin_filename(CLI::App* cmd, std::string& name) {
-  cmd->add_option("--stdin-filename", name, "Name standard input ('-') this way in diagnostics (default: <stdin>)")
+  takes(cmd->add_option("--stdin-filename", name, "Name standard input ('-') this way in diagnostics (default: <stdin>)"),
+        arg_kind::text)
       ->type_name("NAME");
 }
 
