@@ -24,13 +24,13 @@ struct diff_cli {
 
 // Reads and analyses one side; null (and the reason printed) when it cannot
 // be compared: unreadable, or syntax errors that leave its model incomplete.
-std::unique_ptr<analysis> load(const std::string& path) {
+std::unique_ptr<analysis> load(const std::string& path, color_mode color) {
   auto file = read_or_report(path);
   if (!file) return nullptr;
   auto a = analyze(std::move(file), {});
   if (a->has_syntax_errors()) {
     std::string report;
-    for (const auto& d : a->syntax) render_text(*a->source, d, text_style{use_color(color_mode::auto_detect, stderr)}, report);
+    for (const auto& d : a->syntax) render_text(*a->source, d, text_style{use_color(color, stderr)}, report);
     write_all(stderr, report);
     print_error(fmt::format("{}: cannot compare: syntax errors leave its model incomplete (edsc fix repairs the "
                             "certain ones)",
@@ -45,8 +45,8 @@ std::unique_ptr<analysis> load(const std::string& path) {
 }
 
 int run_diff(const diff_cli& cli) {
-  const auto before = load(cli.before);
-  const auto after = load(cli.after);
+  const auto before = load(cli.before, cli.color);
+  const auto after = load(cli.after, cli.color);
   if (!before || !after) return exit_failure;
   diff::options opt;
   opt.assumed = cli.keying;

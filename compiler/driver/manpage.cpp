@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "diag/catalogue.hpp"
+#include "edsc_install_dirs.hpp"
 
 namespace edsc::driver {
 
@@ -91,7 +92,7 @@ void add_see_also(const cli_command& top, const cli_command& c, std::string& out
   }
   out += ".SH SEE ALSO\n";
   for (std::size_t i = 0; i < refs.size(); ++i) out += refs[i] + (i + 1 < refs.size() ? ",\n" : "\n");
-  out += ".PP\nThe documentation in /usr/share/doc/edsc/ (cli.md is the command reference).\n";
+  out += fmt::format(".PP\nThe documentation in {}/ (cli.md is the command reference).\n", roff(EDSC_INSTALL_DOCDIR));
 }
 
 std::string rule_list() {
@@ -102,28 +103,38 @@ std::string rule_list() {
   return out;
 }
 
+// The summary without the program's name in front ("edsc: a compiler for
+// ..." at the top), since NAME already starts with it.
+std::string_view summary_of(const cli_command& c) {
+  std::string_view s = c.summary;
+  if (s.starts_with("edsc: ")) s.remove_prefix(6);
+  return s;
+}
+
 std::string page(const cli_command& top, const cli_command& c, const std::string& version) {
   const auto name = page_name(c);
   std::string upper;
   for (const char ch : name) upper += static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
   std::string out = fmt::format(".TH {} 1 \"\" \"edsc {}\" \"edsc manual\"\n", roff(upper), roff(version));
-  out += fmt::format(".SH NAME\n{} \\- {}\n", roff(name), roff(c.summary));
+  out += fmt::format(".SH NAME\n{} \\- {}\n", roff(name), roff(summary_of(c)));
   add_synopsis(c, out);
-  out += ".SH DESCRIPTION\n" + roff(c.summary) + ".\n";
+  out += ".SH DESCRIPTION\n" + roff(summary_of(c)) + ".\n";
   if (!c.subcommands.empty()) {
     out += ".SH COMMANDS\n";
     for (const auto& s : c.subcommands)
-      out += fmt::format(".TP\n\\fB{}\\fR\n{}. See \\fB{}\\fR(1).\n", roff(s.name), roff(s.summary),
-                         roff(s.subcommands.empty() ? page_name(s) : page_name(s.subcommands.front())));
+      out += fmt::format(".TP\n\\fB{}\\fR\n{}. See \\fB{}\\fR(1).\n", roff(s.name), roff(s.summary), roff(page_name(s)));
   }
   add_options(c, out);
   out += exit_status;
   add_examples(c, out);
   if (c.path == "rules") out += rule_list();
   if (c.path.empty())
-    out += ".SH ENVIRONMENT\n.TP\nNO_COLOR\nWhen set, text reports are not coloured (as --color=never).\n";
-  out += ".SH FILES\n.TP\n/usr/share/doc/edsc/\nThe user documentation.\n";
-  if (c.path == "header") out += ".TP\n/usr/share/edsc/templates/\nThe built-in header templates, a start for --template-dir.\n";
+    out += ".SH ENVIRONMENT\n.TP\nNO_COLOR\n" +
+           roff("Set to anything but the empty string, text is not coloured unless --color always asks for it.") + "\n";
+  out += fmt::format(".SH FILES\n.TP\n{}/\nThe user documentation.\n", roff(EDSC_INSTALL_DOCDIR));
+  if (c.path == "header")
+    out += fmt::format(".TP\n{}/edsc/templates/\nThe built-in header templates, a start for --template-dir.\n",
+                       roff(EDSC_INSTALL_DATADIR));
   add_see_also(top, c, out);
   return out;
 }

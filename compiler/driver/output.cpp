@@ -16,7 +16,8 @@ namespace edsc::driver {
 
 bool use_color(color_mode mode, std::FILE* stream) {
   if (mode != color_mode::auto_detect) return mode == color_mode::always;
-  if (std::getenv("NO_COLOR") != nullptr) return false;
+  // no-color.org: present and not empty; --color always or never still decides.
+  if (const char* no = std::getenv("NO_COLOR"); no != nullptr && *no != '\0') return false;
   const char* term = std::getenv("TERM");
   if (term == nullptr || std::string_view(term) == "dumb") return false;
   return ::isatty(::fileno(stream)) != 0;

@@ -2,6 +2,7 @@
 // definitions (edsc _man, edsc completions): every command has its page,
 // every option of --help is in it, and bash completes what a user types.
 #include "cli/cli_support.hpp"
+#include "test_paths.hpp"
 
 namespace {
 
@@ -172,6 +173,71 @@ TEST_F(Cli, EveryCommandHasAManPageListingItsOptions) {
     ::pclose(p);
     EXPECT_EQ(warnings, "") << e.path();
   }
+}
+
+// A path as roff writes it ('-' is "\-").
+std::string roff_path(std::string s) {
+  for (std::string::size_type at = 0; (at = s.find('-', at)) != std::string::npos; at += 2) s.replace(at, 1, "\\-");
+  return s;
+}
+
+TEST_F(Cli, ManPagesPointAtTheRightPagesAndTheInstalledFiles) {
+  const auto man = dir_ / "man";
+  ASSERT_EQ(run_edsc({"_man", man.string()}).status, 0);
+  const auto top = read_bytes(man / "edsc.1");
+  // net has a page of its own, listing check and map.
+  EXPECT_NE(top.find("\\fBnet\\fR\nCheck a DeviceNet network file and lay out its scanner's images (docs/network.md). "
+                     "See \\fBedsc\\-net\\fR(1).\n"),
+            std::string::npos)
+      << top;
+  EXPECT_NE(read_bytes(man / "edsc-net.1").find("See \\fBedsc\\-net\\-map\\fR(1)."), std::string::npos);
+  // The name once.
+  EXPECT_NE(top.find(".SH NAME\nedsc \\- a compiler for ODVA CIP Electronic Data Sheets (EDS)\n"), std::string::npos)
+      << top.substr(0, 300);
+  // NO_COLOR as it behaves: a colour asked for on the command line wins.
+  EXPECT_NE(top.find("NO_COLOR\nSet to anything but the empty string, text is not coloured unless \\-\\-color always "
+                     "asks for it.\n"),
+            std::string::npos);
+  // FILES names where `cmake --install` puts them for this build's prefix,
+  // and no page names the source or build tree.
+  const auto build_dir = fs::path(EDSC_BINARY).parent_path().parent_path();
+  for (const auto& e : fs::directory_iterator(man)) {
+    const auto text = read_bytes(e.path());
+    EXPECT_NE(text.find(".SH FILES\n.TP\n" + roff_path(std::string(EDSC_INSTALL_DOCDIR)) + "/\nThe user documentation.\n"),
+              std::string::npos)
+        << e.path();
+    EXPECT_EQ(text.find(roff_path(EDSC_PROJECT_DIR)), std::string::npos) << e.path();
+    EXPECT_EQ(text.find(roff_path(build_dir.string())), std::string::npos) << e.path();
+  }
+  EXPECT_NE(read_bytes(man / "edsc-header.1").find(roff_path(std::string(EDSC_INSTALL_DATADIR) + "/edsc/templates/")),
+            std::string::npos);
+}
+
+// Runs `edsc args` on a terminal (script(1) gives it a pseudo terminal), with
+// NO_COLOR as given (unset when null); the output.
+std::string on_a_terminal(const std::string& args, const char* no_color) {
+  std::string env = no_color == nullptr ? "-u NO_COLOR" : "NO_COLOR='" + std::string(no_color) + "'";
+  env += " TERM=xterm";
+  const auto cmd = "env " + env + " script -qec \"'" + std::string(EDSC_BINARY) + "' " + args + "\" /dev/null";
+  std::string out;
+  std::FILE* p = ::popen(cmd.c_str(), "r");
+  char buf[4096];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
+  ::pclose(p);
+  return out;
+}
+
+// no-color.org: NO_COLOR present and not empty turns colour off where edsc
+// would colour by itself; --color always still colours.
+TEST_F(Cli, NoColorAsDocumented) {
+  const auto bad = file("bad.eds", "[Device]\nVendCode = ;\n").string();
+  const auto check = "check '" + bad + "'";
+  const std::string escape = "\x1b[";
+  ASSERT_NE(on_a_terminal(check, nullptr).find(escape), std::string::npos) << "no colour on a terminal at all";
+  EXPECT_EQ(on_a_terminal(check, "1").find(escape), std::string::npos);
+  EXPECT_NE(on_a_terminal(check, "").find(escape), std::string::npos) << "an empty NO_COLOR is no request";
+  EXPECT_NE(on_a_terminal("check --color always '" + bad + "'", "1").find(escape), std::string::npos);
+  EXPECT_EQ(on_a_terminal("check --color never '" + bad + "'", nullptr).find(escape), std::string::npos);
 }
 
 }  // namespace
