@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "diag/plural.hpp"
 #include "diag/render_text.hpp"
 #include "driver/commands.hpp"
 #include "driver/destination.hpp"
@@ -84,8 +85,8 @@ int run_edit(const edit_options& opt) {
     for (const auto& d : fresh) render_text(*after->source, d, style, report);
     const auto old_errors = before->errors();
     if (old_errors > 0)
-      report += fmt::format("note: the input already had {} error{} (see edsc check); only new ones block the write\n",
-                            old_errors, old_errors == 1 ? "" : "s");
+      report += fmt::format("note: the input already had {} (see edsc check); only new ones block the write\n",
+                            plural(old_errors, "error"));
     write_all(stderr, report);
     if (count_at_least(fresh, severity::error) > 0 && !opt.force) {
       print_error(fmt::format("{}: not written: the edit introduces the errors above; --force writes anyway",

@@ -44,8 +44,8 @@ int run_fix(const fix_options& opt) {
   if (!opt.quiet) {
     for (const auto& d : result.remaining) render_text(*result.final_source, d, style, report);
   }
-  report += fmt::format("{}: {} fix{} applied, {} left without a fix-it ({})\n", src.path(), result.applied.size(),
-                        result.applied.size() == 1 ? "" : "es", plural(result.remaining.size(), "finding"),
+  report += fmt::format("{}: {} applied, {} left without a fix-it ({})\n", src.path(),
+                        plural(result.applied.size(), "fix", "fixes"), plural(result.remaining.size(), "finding"),
                         plural(count_at_least(result.remaining, severity::error), "error"));
   if (!result.converged) report += "edsc: warning: fix-its kept appearing; stopped after several passes\n";
   write_all(stderr, report);

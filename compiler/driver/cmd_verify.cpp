@@ -104,7 +104,7 @@ int run_verify_network(const verify_cli& cli) {
 // would be silently ignored: say so instead.
 std::vector<std::string> ignored_by_decode(const verify_cli& cli) {
   std::vector<std::string> out;
-  if (!cli.eds.empty()) out.push_back("an EDS file");
+  if (!cli.eds.empty()) out.push_back("EDS file");
   if (!cli.capture.empty()) out.push_back("--capture");
   if (cli.mac >= 0) out.push_back("--mac");
   if (!cli.network.empty()) out.push_back("--network");
