@@ -10,6 +10,7 @@
 // - More: any escape after a backslash parses; undefined escapes and `\u`
 //   outside L"..." are reported as errors afterwards, so the string still
 //   round-trips byte for byte.
+// - More: a UTF-8 byte-order mark before the first byte of the text.
 // - More: error productions. A missing `;`, `=`, `,` or `}` and stray text are
 //   recognised, reported and stepped over (resynchronising at the next `;`,
 //   `[` or line that starts `Keyword =`), so one run reports every error.
@@ -270,8 +271,17 @@ struct lbracket : pg::one<'['> {};
 struct rbracket : pg::one<']'> {};
 struct section_name : name_text {};
 struct good_header : pg::seq<lbracket, pg::opt<blank>, section_name, pg::opt<blank>, rbracket> {};
-// Stops at `$` too: a comment after a broken header stays a comment.
-struct bad_header_body : pg::star<pg::not_one<']', '\r', '\n', '$'>> {};
+// Runs to the last `]` before the line end or a `$` (a comment after a
+// broken header stays a comment), so `[[Foo]]` is one malformed header, not
+// a header and a stray `]`; without a `]`, to the line end or the `$`.
+inline std::size_t bad_header_body_length(const char* const begin, const char* const end) noexcept {
+  const char* close = nullptr;
+  const char* p = begin;
+  for (; p != end && !is_line_end(*p) && *p != '$'; ++p)
+    if (*p == ']') close = p;
+  return static_cast<std::size_t>((close != nullptr ? close : p) - begin);
+}
+struct bad_header_body : scan<bad_header_body_length, false> {};
 struct bad_header : pg::seq<lbracket, bad_header_body, pg::opt<rbracket>> {};
 struct section_header : pg::sor<pg::seq<pg::at<good_header>, good_header>, bad_header> {};
 
@@ -394,6 +404,9 @@ struct item_start : pg::sor<pg::one<' ', '\t', '\r', '\n', '$', '['>, entry_keyw
 // since the usual cause is a comment that lost its `$`.
 struct stray : pg::seq<pg::plus<pg::not_at<item_start>, pg::any>, pg::star<pg::not_one<'\r', '\n', '$'>>> {};
 struct item : pg::sor<trivia, section_header, entry, stray> {};
-struct file : pg::seq<pg::star<item>, pg::eof> {};
+// A UTF-8 byte-order mark opens the file at most: what Windows editors save
+// first, and what C compilers accept there. Elsewhere it is stray text.
+struct bom : pg::string<'\xEF', '\xBB', '\xBF'> {};
+struct file : pg::seq<pg::opt<bom>, pg::star<item>, pg::eof> {};
 
 }  // namespace edsc::grammar

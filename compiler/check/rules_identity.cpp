@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include "check/context.hpp"
+#include "check/text_length.hpp"
+#include "cip/encap.hpp"
 
 namespace edsc {
 
@@ -93,10 +95,10 @@ void check_identity(const check_context& ctx) {
   if (id.maj_rev.is_integer() && id.maj_rev.as_uint() == 0) {
     ctx.report(diag_id::majrev_zero, ctx.where(id.maj_rev), "MajRev is 0; major revisions start at 1");
   }
-  if (id.prod_name.ok() && id.prod_name.text.size() > 32) {
+  if (id.prod_name.ok() && id.prod_name.text.size() > cip::max_product_name) {
     ctx.report(diag_id::prodname_too_long, ctx.where(id.prod_name),
-               fmt::format("ProdName is {} characters; the device's product name attribute holds at most 32",
-                           id.prod_name.text.size()));
+               fmt::format("ProdName is {}; the device's product name attribute holds at most {} bytes",
+                           byte_length(id.prod_name.text), cip::max_product_name));
   }
   check_dates(ctx);
   check_file_name(ctx);

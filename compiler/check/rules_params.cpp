@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include "check/context.hpp"
+#include "check/text_length.hpp"
 #include "check/value_order.hpp"
 #include "diag/plural.hpp"
 #include "schema/cip_types.hpp"
@@ -45,13 +46,17 @@ void check_type(const check_context& ctx, const model::param& p) {
 void check_string_limits(const check_context& ctx, const model::param& p) {
   const auto& def = p.default_value;
   if (!def.ok() || def.kind != model::value_kind::string) return;
-  const auto length = def.text.size();
+  // STRING and SHORT_STRING hold a byte per character: their bounds count
+  // bytes. The wider types (STRING2, STRINGN) hold a character per unit.
+  const bool eight_bit = p.type->code == schema::code::STRING || p.type->code == schema::code::SHORT_STRING;
+  const auto length = eight_bit ? def.text.size() : utf8::characters(def.text);
   const bool too_short = p.min.is_integer() && length < p.min.as_uint();
   const bool too_long = p.max.is_integer() && length > p.max.as_uint();
   if (too_short || too_long) {
     ctx.report(diag_id::param_string_length, ctx.where(def),
-               fmt::format("{} default is {} characters, outside its length bounds {} to {}", pname(p),
-                           length, ctx.raw(p.min), ctx.raw(p.max)));
+               fmt::format("{} default is {}, outside its length bounds {} to {}", pname(p),
+                           eight_bit ? byte_length(def.text) : plural(length, "character"), ctx.raw(p.min),
+                           ctx.raw(p.max)));
   }
 }
 

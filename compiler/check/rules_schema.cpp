@@ -52,6 +52,7 @@ void check_required_fields(const check_context& ctx, const cst::entry& e, const 
 void check_sections(const check_context& ctx) {
   for (const auto& s : ctx.dev.sections) {
     const auto& sec = ctx.tree.sections[s.section];
+    if (!sec.header_ok) continue;  // a malformed header has its syntax error and no name
     if (s.desc == nullptr) {
       if (!s.vendor_specific) {
         ctx.report(diag_id::unknown_section, sec.name,

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "source/utf8.hpp"
+
 namespace edsc::cip {
 
 bytes encode_encap_reply(std::uint16_t cmd, std::uint32_t session, std::uint32_t status,
@@ -31,9 +33,9 @@ void put_identity_fields(bytes& b, const identity& id) {
   put_u8(b, id.minor);
   put_u16(b, id.status);
   put_u32(b, id.serial);
-  const auto n = std::min<std::size_t>(id.product_name.size(), 32);  // SHORT_STRING: at most 32 in Identity
-  put_u8(b, static_cast<std::uint8_t>(n));
-  for (std::size_t i = 0; i < n; ++i) put_u8(b, static_cast<std::uint8_t>(id.product_name[i]));
+  const auto name = utf8::cut(id.product_name, max_product_name);
+  put_u8(b, static_cast<std::uint8_t>(name.size()));
+  for (const char c : name) put_u8(b, static_cast<std::uint8_t>(c));
 }
 
 bytes list_identity_reply(const identity& id) {

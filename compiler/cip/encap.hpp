@@ -90,6 +90,11 @@ struct unit_data {
 
 // A ListIdentity reply item (also what Identity Get_Attributes_All gives,
 // without the socket address and the encapsulation version).
+// Identity attribute 7, Product Name: a SHORT_STRING of at most 32 bytes
+// (its length is one USINT of bytes; a byte is a character of the device's
+// 8-bit string, so UTF-8 text takes more than one per character).
+inline constexpr std::size_t max_product_name = 32;
+
 struct identity {
   std::uint16_t encap_version = 0;
   std::uint16_t sin_family = 0, sin_port = 0;

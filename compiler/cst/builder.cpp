@@ -76,6 +76,7 @@ void builder::lbracket(span s) {
   open_section_ = static_cast<std::uint32_t>(t_.sections.size());
   section sec;
   sec.header = s;
+  sec.name = {s.end, s.end};  // until a name is read: where it would stand
   sec.first_token = static_cast<std::uint32_t>(t_.tokens.size());
   sec.entries_begin = static_cast<std::uint32_t>(t_.entries.size());
   t_.sections.push_back(sec);

@@ -7,6 +7,7 @@ std::string_view to_string(token_kind k) {
     case token_kind::blank: return "blank";
     case token_kind::newline: return "newline";
     case token_kind::comment: return "comment";
+    case token_kind::bom: return "bom";
     case token_kind::lbracket: return "lbracket";
     case token_kind::section_name: return "section-name";
     case token_kind::rbracket: return "rbracket";

@@ -17,6 +17,7 @@ enum class token_kind : std::uint8_t {
   blank,         // run of spaces and tabs
   newline,       // CR, LF or CRLF
   comment,       // `$` to end of line
+  bom,           // a UTF-8 byte-order mark, only ever the file's first token
   lbracket,      // `[` of a section header
   section_name,  // the name between the brackets (trimmed)
   rbracket,      // `]`
@@ -31,9 +32,8 @@ enum class token_kind : std::uint8_t {
   skipped,       // bytes the parser stepped over while recovering from an error
 };
 
-[[nodiscard]] constexpr bool is_trivia(token_kind k) {
-  return k == token_kind::blank || k == token_kind::newline || k == token_kind::comment;
-}
+// The trivia kinds come first: one comparison per token.
+[[nodiscard]] constexpr bool is_trivia(token_kind k) { return k <= token_kind::bom; }
 
 // Tokens tile the input: token i ends where token i+1 begins, the first starts
 // at 0 and the last ends at the end of the file. That is what makes the tree

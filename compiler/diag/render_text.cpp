@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "source/utf8.hpp"
+
 namespace edsc {
 
 namespace {
@@ -17,17 +19,6 @@ const char* colour_of(severity s) {
     case severity::note: return "\033[1;36m";
   }
   return "";
-}
-
-// Length of a valid UTF-8 sequence starting at p, or 0.
-std::size_t utf8_length(std::string_view s, std::size_t i) {
-  const auto c = static_cast<unsigned char>(s[i]);
-  std::size_t n = c >= 0xF0 && c <= 0xF4 ? 4 : c >= 0xE0 ? 3 : c >= 0xC2 && c < 0xE0 ? 2 : 0;
-  if (n == 0 || i + n > s.size()) return 0;
-  for (std::size_t k = 1; k < n; ++k) {
-    if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return 0;
-  }
-  return n;
 }
 
 // The source line made safe for a terminal, with the display column at which
@@ -53,7 +44,7 @@ shown_line show(std::string_view bytes) {
       out.text.push_back(static_cast<char>(c));
       ++col;
       ++i;
-    } else if (const auto n = c >= 0x80 ? utf8_length(bytes, i) : 0; n > 0) {
+    } else if (const auto n = c >= 0x80 ? utf8::sequence_length(bytes, i) : 0; n > 0) {
       out.text.append(bytes.substr(i, n));
       for (std::size_t k = 1; k < n; ++k) out.column.push_back(col);
       ++col;
@@ -68,22 +59,25 @@ shown_line show(std::string_view bytes) {
   return out;
 }
 
-void render_location(const source_file& src, span where, severity level, std::string_view message,
-                     std::string_view id, const std::vector<fixit>& fixits, const text_style& style,
-                     std::string& out) {
+void render_location(const source_file& src, std::string_view path, span where, severity level,
+                     std::string_view message, std::string_view id, const std::vector<fixit>& fixits,
+                     const text_style& style, std::string& out) {
   const auto pos = src.position(where.begin);
   const char* bold = style.color ? "\033[1m" : "";
   const char* reset = style.color ? "\033[0m" : "";
-  out += fmt::format("{}{}:{}:{}: {}{}:{} {}{}", bold, src.path(), pos.line, pos.column,
+  out += fmt::format("{}{}:{}:{}: {}{}:{} {}{}", bold, path, pos.line, pos.column,
                      style.color ? colour_of(level) : "", to_string(level), reset, bold, message);
   if (!id.empty()) out += fmt::format(" [{}]", id);
   out += reset;
   out += '\n';
 
   const auto line = src.line_text(pos.line);
+  const auto line_offset = static_cast<std::uint32_t>(line.data() - src.text().data());
   const std::uint32_t caret = pos.column - 1;
-  const std::uint32_t first = caret > window_bytes ? caret - window_bytes : 0;
-  const std::uint32_t last = std::min<std::uint32_t>(static_cast<std::uint32_t>(line.size()), caret + window_bytes);
+  // The window of a long line ends between characters, never inside one.
+  const auto whole = [&](std::uint32_t end) { return static_cast<std::uint32_t>(utf8::boundary_before(line, end)); };
+  const std::uint32_t first = caret > window_bytes ? whole(caret - window_bytes) : 0;
+  const std::uint32_t last = whole(std::min<std::uint32_t>(static_cast<std::uint32_t>(line.size()), caret + window_bytes));
   const auto shown = show(line.substr(first, last - first));
   const std::string prefix = first > 0 ? "..." : "";
   const std::string suffix = last < line.size() ? "..." : "";
@@ -96,8 +90,10 @@ void render_location(const source_file& src, span where, severity level, std::st
     return static_cast<std::uint32_t>(prefix.size()) + shown.column[std::min<std::size_t>(i, shown.column.size() - 1)];
   };
   const std::uint32_t start = column_at(caret);
-  const auto line_end_offset = where.begin - caret + static_cast<std::uint32_t>(line.size());
-  const std::uint32_t span_end_col = caret + (std::min(where.end, line_end_offset) - where.begin);
+  // A span may start in a byte-order mark, which no line shows.
+  const std::uint32_t begin = std::max(where.begin, line_offset);
+  const auto line_end_offset = line_offset + static_cast<std::uint32_t>(line.size());
+  const std::uint32_t span_end_col = caret + (std::clamp(where.end, begin, line_end_offset) - begin);
   const std::uint32_t stop = std::max(start + 1, column_at(span_end_col));
   out += blank_gutter + "| " + (style.color ? "\033[1;32m" : "") + std::string(start, ' ') + '^' +
          std::string(stop - start - 1, '~') + reset + '\n';
@@ -111,9 +107,15 @@ void render_location(const source_file& src, span where, severity level, std::st
 
 }  // namespace
 
+void render_text(const source_file& src, std::string_view shown_path, const diagnostic& d, const text_style& style,
+                 std::string& out) {
+  render_location(src, shown_path, d.where, d.level, d.message, rule_of(d.id).name, d.fixits, style, out);
+  for (const auto& n : d.notes)
+    render_location(src, shown_path, n.where, severity::note, n.message, {}, {}, style, out);
+}
+
 void render_text(const source_file& src, const diagnostic& d, const text_style& style, std::string& out) {
-  render_location(src, d.where, d.level, d.message, rule_of(d.id).name, d.fixits, style, out);
-  for (const auto& n : d.notes) render_location(src, n.where, severity::note, n.message, {}, {}, style, out);
+  render_text(src, src.path(), d, style, out);
 }
 
 }  // namespace edsc

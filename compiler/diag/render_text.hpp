@@ -1,5 +1,6 @@
 #pragma once
 #include <string>
+#include <string_view>
 
 #include "diag/diagnostic.hpp"
 #include "source/source_file.hpp"
@@ -17,5 +18,9 @@ struct text_style {
 //         |                                       ,
 // then its notes the same way.
 void render_text(const source_file& src, const diagnostic& d, const text_style& style, std::string& out);
+// The same naming `shown_path` instead of the source's path: for findings in
+// text that goes elsewhere (an edit's result, located in its output).
+void render_text(const source_file& src, std::string_view shown_path, const diagnostic& d, const text_style& style,
+                 std::string& out);
 
 }  // namespace edsc

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "diff/context.hpp"
+#include "source/utf8.hpp"
 
 namespace edsc::diff::detail {
 
@@ -97,9 +98,7 @@ std::string brief(std::string_view s, std::size_t max) {
   std::string out;
   for (const char ch : s) out += ch == '\n' ? ' ' : ch;
   if (out.size() <= max) return out;
-  auto cut = max;
-  while (cut > 0 && (static_cast<unsigned char>(out[cut]) & 0xC0) == 0x80) --cut;  // not inside UTF-8
-  return out.substr(0, cut) + "...";
+  return std::string(utf8::cut(out, max)) + "...";
 }
 
 }  // namespace edsc::diff::detail

@@ -120,8 +120,12 @@ std::string html_index(const std::vector<library_entry>& entries,
                          s.major, s.minor);
       for (std::size_t k = 0; k < c.size(); ++k) {
         out += k == 0 ? "" : ", ";
+        if (entries[c[k]].page.empty()) {
+          append_escaped(out, entries[c[k]].source);
+          continue;
+        }
         out += R"(<a href=")";
-        append_escaped(out, entries[c[k]].page);
+        out += url_escaped(entries[c[k]].page);
         out += R"(">)";
         append_escaped(out, entries[c[k]].source);
         out += "</a>";
@@ -149,7 +153,7 @@ std::string html_index(const std::vector<library_entry>& entries,
       out += "<td>";
       if (!e.page.empty()) {
         out += R"(<a href=")";
-        append_escaped(out, e.page);
+        out += url_escaped(e.page);
         out += R"(">)";
         append_escaped(out, s.product.empty() ? "(no ProdName)" : s.product);
         out += "</a>";
@@ -185,7 +189,8 @@ std::string md_index(const std::vector<library_entry>& entries,
     out += "## Identity collisions\n\nSame vendor, type, code and revision, different contents:\n\n";
     for (const auto& c : collisions) {
       out += "-";
-      for (const auto i : c) out += fmt::format(" [{}]({})", md_escaped(entries[i].source), entries[i].page);
+      for (const auto i : c)
+        out += fmt::format(" [{}]({})", md_escaped(entries[i].source), url_escaped(entries[i].page));
       out += "\n";
     }
     out += "\n";
@@ -197,9 +202,8 @@ std::string md_index(const std::vector<library_entry>& entries,
     for (const auto i : rows) {
       const auto& e = entries[i];
       const auto& s = e.sum;
-      const auto product = e.unreadable ? md_escaped(e.problem)
-                                        : fmt::format("[{}]({})", md_escaped(s.product.empty() ? "(no ProdName)" : s.product),
-                                                      e.page);
+      const auto name = md_escaped(e.unreadable ? e.problem : s.product.empty() ? "(no ProdName)" : s.product);
+      const auto product = e.page.empty() ? name : fmt::format("[{}]({})", name, url_escaped(e.page));
       out += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", product, md_escaped(s.type),
                          s.identified ? std::to_string(s.product_code) : "", md_escaped(s.revision),
                          md_escaped(!e.unreadable && s.networks.empty() ? no_network : s.networks),

@@ -107,7 +107,8 @@ site_result build_site(const std::vector<std::string>& files, const std::string&
       auto page = render_file(files[i], format, stem, opt);
       if (!page.entry.unreadable) {
         write_page(page, fs::path(out_dir) / names[i], failures[i]);
-        page.entry.page = names[i];
+        // The index links only to pages that are there.
+        if (failures[i].empty()) page.entry.page = names[i];
       }
       // The index names files as they sit in the library, not by the path given.
       if (!page.entry.unreadable) page.entry.source = names_in_library[i];

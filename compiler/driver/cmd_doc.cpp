@@ -1,5 +1,6 @@
 // `edsc doc FILE -o device.html` and `edsc doc DIR -o site/`: datasheets a
 // person can read (docs/doc.md).
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <thread>
@@ -73,7 +74,10 @@ int run_site(const doc_cli& cli) {
     warnings += e.sum.warnings;
   }
   const auto collisions = doc::identity_collisions(site.entries);
-  write_all(stderr, fmt::format("{} written to {} ({}, {}{})\n", plural(site.entries.size(), "page"), cli.output,
+  // Pages, not inputs: an unreadable file or a page that could not be written is not one.
+  const auto written = static_cast<std::size_t>(
+      std::count_if(site.entries.begin(), site.entries.end(), [](const auto& e) { return !e.page.empty(); }));
+  write_all(stderr, fmt::format("{} written to {} ({}, {}{})\n", plural(written, "page"), cli.output,
                                 plural(errors, "error"), plural(warnings, "warning"),
                                 collisions.empty() ? "" : ", " + plural(collisions.size(), "identity collision")));
   return status_of(site.entries, !site.failures.empty() || !inputs.errors.empty());

@@ -82,7 +82,8 @@ int run_edit(const edit_options& opt) {
   if (!opt.ops.empty()) {
     const auto after = edit::analyze(src.path(), ed.text());
     const auto fresh = introduced(before->diags, after->diags);
-    for (const auto& d : fresh) render_text(*after->source, d, style, report);
+    // Located in the edited text, so named after where that text goes.
+    for (const auto& d : fresh) render_text(*after->source, opt.dest.target_name(), d, style, report);
     const auto old_errors = before->errors();
     if (old_errors > 0)
       report += fmt::format("note: the input already had {} (see edsc check); only new ones block the write\n",

@@ -42,7 +42,9 @@ int run_fix(const fix_options& opt) {
   }
   const text_style style{use_color(color_mode::auto_detect, stderr)};
   if (!opt.quiet) {
-    for (const auto& d : result.remaining) render_text(*result.final_source, d, style, report);
+    // Located in the repaired text, so named after where that text goes.
+    for (const auto& d : result.remaining)
+      render_text(*result.final_source, opt.dest.target_name(), d, style, report);
   }
   report += fmt::format("{}: {} applied, {} left without a fix-it ({})\n", src.path(),
                         plural(result.applied.size(), "fix", "fixes"), plural(result.remaining.size(), "finding"),

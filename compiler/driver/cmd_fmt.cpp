@@ -6,6 +6,7 @@
 #include "driver/choice.hpp"
 #include "driver/commands.hpp"
 #include "driver/destination.hpp"
+#include "driver/fix_hint.hpp"
 #include "driver/output.hpp"
 #include "edit/analyze.hpp"
 #include "edit/fingerprint.hpp"
@@ -33,8 +34,7 @@ int run_fmt(const fmt_options& opt) {
     std::string report;
     for (const auto& d : a->syntax) render_text(*a->source, d, text_style{use_color(color_mode::auto_detect, stderr)}, report);
     write_all(stderr, report);
-    print_error(fmt::format("{}: not formatted: fix the syntax errors first (edsc fix repairs the certain ones)",
-                            src.path()));
+    print_error(fmt::format("{}: not formatted: fix the syntax errors first{}", src.path(), fix_hint(a->syntax)));
     return exit_findings;
   }
   edit::format_options options;
@@ -54,9 +54,12 @@ int run_fmt(const fmt_options& opt) {
   }
   if (opt.check) {
     if (*out == input) return exit_ok;
+    // The command that makes this same check pass: with its --eol.
+    const auto eol = opt.eol.empty() ? std::string() : " --eol " + opt.eol;
     write_all(stderr, io::is_stdin(opt.dest.input)
                           ? fmt::format("{}: not formatted\n", src.path())
-                          : fmt::format("{}: not formatted (edsc fmt --in-place {} formats it)\n", src.path(), src.path()));
+                          : fmt::format("{}: not formatted (edsc fmt --in-place{} {} formats it)\n", src.path(), eol,
+                                        src.path()));
     return exit_findings;
   }
   return opt.dest.write(*out);

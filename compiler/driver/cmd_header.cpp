@@ -8,12 +8,11 @@
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
 #include "diag/render_text.hpp"
+#include "driver/emitter_input.hpp"
 #include "emit/header_view.hpp"
 #include "emit/opener_plan.hpp"
 #include "io/read_file.hpp"
 #include "io/output_target.hpp"
-#include "lower/lower.hpp"
-#include "parse/parser.hpp"
 
 namespace edsc::driver {
 
@@ -31,16 +30,20 @@ int run_stack_opener(const header_cli& cli) {
     print_error("--stack opener reads a file and writes a folder: neither can be '-'");
     return exit_failure;
   }
-  const auto input_file = read_or_report(cli.input);
+  auto input_file = read_or_report(cli.input);
   if (!input_file) return exit_failure;
-  const auto& src = *input_file;
-  const auto parsed = parse(src);
-  if (report_not_text(parsed, src)) return exit_findings;
+  const auto a = analyse_eds_text(std::move(input_file));
+  if (!a) return exit_findings;
+  const auto& src = *a->source;
+  if (show_errors_touching(*a, emit::emitter::opener_stack)) {
+    print_error(fmt::format("{} has errors in what the OpENer project is built from: nothing written to {}",
+                            src.path(), cli.output));
+    return exit_findings;
+  }
+  // `edsc check` reports the file's own findings; these are OpENer's.
   diagnostics diags;
-  const auto dev = lower(parsed.tree, diags);
-  diags.clear();  // `edsc check` reports the file's own findings; these are OpENer's
   std::vector<emit::header_issue> issues;
-  const auto plan = emit::plan_opener(dev, src, diags, issues);
+  const auto plan = emit::plan_opener(a->dev, src, diags, issues);
   std::string report;
   for (const auto& d : diags) render_text(src, d, text_style{use_color(color_mode::auto_detect, stderr)}, report);
   for (const auto& issue : issues)
@@ -83,27 +86,26 @@ int run_header(const header_cli& cli) {
   opt.serial = cli.serial;
   if (!stdin_filename_used(io::is_stdin(cli.input), cli.stdin_name)) return exit_failure;
   if (refuse_input_as_output(cli.output, {cli.input}) != exit_ok) return exit_failure;
-  const auto input_file = read_or_report(cli.input, cli.stdin_name);
+  auto input_file = read_or_report(cli.input, cli.stdin_name);
   if (!input_file) return exit_failure;
-  const auto& src = *input_file;
+  const auto a = analyse_eds_text(std::move(input_file));
+  if (!a) return exit_findings;
+  const auto& src = *a->source;
   const bool to_stdout = io::is_stdout(cli.output);
   // The include guard follows the header's name; on standard output it is
   // the input's (for `-`, the --stdin-filename, else "stdin.h").
   const std::string input_name = io::is_stdin(cli.input) && cli.stdin_name.empty() ? "stdin" : src.path();
   opt.output_name = to_stdout ? std::filesystem::path(input_name).stem().string() + ".h"
                               : std::filesystem::path(cli.output).filename().string();
-  const auto parsed = parse(src);
-  if (report_not_text(parsed, src)) return exit_findings;
-  diagnostics diags;
-  const auto dev = lower(parsed.tree, diags);
-  const auto result = emit::generate_header(dev, src, opt);
+  const bool refused = show_errors_touching(*a, emit::emitter::header);
+  const auto result = emit::generate_header(a->dev, src, opt);
   for (const auto& issue : result.issues)
     write_all(stderr, fmt::format("{}: {}: {}\n", src.path(), issue.error ? "error" : "warning", issue.message));
   if (result.failure) {
     print_error(*result.failure);
     return exit_failure;
   }
-  if (result.has_error()) {
+  if (refused || result.has_error()) {
     print_error(fmt::format("no header written for {}", src.path()));
     return exit_findings;
   }

@@ -14,6 +14,7 @@
 #include "check/check_file.hpp"
 #include "diag/render_text.hpp"
 #include "driver/commands.hpp"
+#include "driver/emitter_input.hpp"
 #include "driver/output.hpp"
 #include "sim/inputs.hpp"
 #include "sim/server.hpp"
@@ -69,6 +70,10 @@ int run_sim(const sim_cli& cli) {
   if (checked->has_syntax_errors()) {
     print_error(fmt::format("{}: syntax errors (see edsc check {}); not simulated", cli.eds, cli.eds));
     return exit_failure;
+  }
+  if (show_errors_touching(*checked, emit::emitter::simulator)) {
+    print_error(fmt::format("{}: errors in what the simulated device serves (above); not simulated", cli.eds));
+    return exit_findings;
   }
   sim::state s;
   s.dev = sim::build_device(checked->dev, cli.serial);

@@ -6,6 +6,7 @@
 #include "edit/value_check.hpp"
 #include "parse/parser.hpp"
 #include "schema/text.hpp"
+#include "source/utf8.hpp"
 
 namespace edsc::edit {
 
@@ -98,10 +99,12 @@ replacement editor::new_section(std::string_view name, std::string_view first_en
   if (anchor == cst::npos && !tree_.sections.empty()) anchor = static_cast<std::uint32_t>(tree_.sections.size() - 1);
   if (anchor != cst::npos) at = end_of_section_content(anchor);
   std::string indent = anchor != cst::npos ? entry_indent(anchor) : "    ";
-  std::string out = at == 0 ? "" : fmt::format("{}{}", eol_, eol_);
+  // An empty file (a byte-order mark is no text) gets the header alone.
+  const bool empty = at == utf8::bom_length(text_);
+  std::string out = empty ? "" : fmt::format("{}{}", eol_, eol_);
   out += fmt::format("[{}]", name);
   if (!first_entry.empty()) out += fmt::format("{}{}{}", eol_, indent, first_entry);
-  if (at == text_.size() && at == 0) out += eol_;
+  if (at == text_.size() && empty) out += eol_;
   return {{at, at}, out};
 }
 

@@ -6,6 +6,7 @@
 
 #include "edit/splice.hpp"
 #include "schema/text.hpp"
+#include "source/utf8.hpp"
 
 namespace edsc::edit {
 
@@ -175,6 +176,8 @@ std::optional<std::string> format(const cst::tree& t, const format_options& opti
     bool trailer_first = true;
     put_notes(out, carried, "", eol, trailer_first);
   }
+  // A byte-order mark stays the file's first bytes.
+  out.insert(0, src.substr(0, utf8::bom_length(src)));
   return out;
 }
 

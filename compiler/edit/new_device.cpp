@@ -49,7 +49,8 @@ void devicenet_io(const device_spec& s, std::string& out) {
   for (const auto& c : conns) all |= connection_bit(c);
   if ((all & 0x0004) && (all & 0x0008))
     throw edit_error("cos and cyclic share one DeviceNet connection; choose one of them");
-  if (s.input == 0 && s.output == 0) throw edit_error("a DeviceNet node needs --input or --output bytes");
+  if (s.input == 0 && s.output == 0)
+    throw edit_error("a DeviceNet node has data one way at least: give --input-bytes or --output-bytes");
   out += "[IO_Info]\n";
   out += fmt::format("Default = 0x{:04X};\n", connection_bit(conns.front()));
   const std::pair<const char*, std::uint16_t> infos[] = {
@@ -72,8 +73,8 @@ void devicenet_io(const device_spec& s, std::string& out) {
 
 void ethernetip_io(const device_spec& s, std::string& out) {
   if (s.input == 0 || s.output == 0)
-    throw edit_error("an EtherNet/IP device made by edsc new has an exclusive-owner connection: give --input and "
-                     "--output (1 byte or more each)");
+    throw edit_error("an EtherNet/IP device made by edsc new has an exclusive-owner connection: give "
+                     "--input-bytes and --output-bytes (1 byte or more each)");
   out += "[Assembly]\n";
   out += fmt::format("Assem100 = {}, \"\", {}, 0x0000,,;\n", quote(s.input_name), s.input);
   out += fmt::format("Assem150 = {}, \"\", {}, 0x0000,,;\n", quote(s.output_name), s.output);
@@ -95,7 +96,7 @@ void ethernetip_io(const device_spec& s, std::string& out) {
 
 std::string make_eds(const device_spec& spec, const std::string& eol) {
   auto s = spec;
-  if (s.name.empty()) throw edit_error("--name is required");
+  if (s.name.empty()) throw edit_error("--name is empty; a device needs a product name");
   if (s.vendor > 0xFFFF || s.product_type > 0xFFFF || s.product_code > 0xFFFF)
     throw edit_error("vendor, product type and product code are 16-bit numbers (0 to 65535)");
   if (s.vendor_name.empty()) s.vendor_name = fmt::format("Vendor {}", s.vendor);

@@ -30,7 +30,10 @@ struct device_spec {
 };
 
 // Reads a spec from JSON text (unknown keys are an error, so typos show).
-[[nodiscard]] device_spec spec_from_json(const std::string& json_text);
+// A required key may be missing when `given_elsewhere` names it (the
+// command line gives it).
+[[nodiscard]] device_spec spec_from_json(const std::string& json_text,
+                                         const std::vector<std::string>& given_elsewhere = {});
 
 // The complete EDS, laid out as `edsc fmt` would. Throws edit_error for a
 // spec that cannot describe a device (names the offending key).

@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include <fmt/format.h>
@@ -19,9 +21,15 @@ void take(const nlohmann::json& j, const char* key, T& out) {
   }
 }
 
+// "product_code" is --product-code on the command line.
+std::string option_of(std::string key) {
+  std::replace(key.begin(), key.end(), '_', '-');
+  return key;
+}
+
 }  // namespace
 
-device_spec spec_from_json(const std::string& json_text) {
+device_spec spec_from_json(const std::string& json_text, const std::vector<std::string>& given_elsewhere) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(json_text);
@@ -40,7 +48,8 @@ device_spec spec_from_json(const std::string& json_text) {
     if (!known) throw edit_error(fmt::format("device JSON: unknown key '{}'", k));
   }
   for (const auto* key : {"vendor", "product_type", "product_code", "name"})
-    if (!j.contains(key)) throw edit_error(fmt::format("device JSON: '{}' is required", key));
+    if (!j.contains(key) && std::find(given_elsewhere.begin(), given_elsewhere.end(), key) == given_elsewhere.end())
+      throw edit_error(fmt::format("device JSON: '{}' is required (or --{})", key, option_of(key)));
   device_spec s;
   take(j, "vendor", s.vendor);
   take(j, "vendor_name", s.vendor_name);

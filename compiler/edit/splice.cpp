@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "source/utf8.hpp"
+
 namespace edsc::edit {
 
 std::optional<std::string> apply_replacements(std::string_view source, std::vector<replacement> changes) {
@@ -59,7 +61,10 @@ std::string with_eol(std::string_view text, std::string_view eol) {
 
 std::uint32_t line_begin(std::string_view text, std::uint32_t offset) {
   offset = std::min<std::uint32_t>(offset, static_cast<std::uint32_t>(text.size()));
-  while (offset > 0 && text[offset - 1] != '\n' && text[offset - 1] != '\r') --offset;
+  // The first line begins after a byte-order mark: what edits a line's
+  // start (removing a section, indenting) leaves the mark alone.
+  const auto first = std::min(utf8::bom_length(text), offset);
+  while (offset > first && text[offset - 1] != '\n' && text[offset - 1] != '\r') --offset;
   return offset;
 }
 

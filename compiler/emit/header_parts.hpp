@@ -7,8 +7,6 @@
 
 namespace edsc::emit {
 
-inline constexpr std::size_t max_product_name = 32;  // Identity attribute 7
-
 [[nodiscard]] std::vector<eip_connection_facts> collect_connections(const model::device& dev,
                                                                     std::vector<header_issue>& issues);
 [[nodiscard]] std::vector<param_facts> collect_params(const model::device& dev);

@@ -3,9 +3,11 @@
 
 #include <fmt/format.h>
 
+#include "cip/encap.hpp"
 #include "emit/header_parts.hpp"
 #include "emit/header_view.hpp"
 #include "emit/sha256.hpp"
+#include "source/utf8.hpp"
 
 namespace edsc::emit {
 
@@ -39,13 +41,18 @@ identity_facts collect_identity(const model::device_info& d, std::vector<header_
   } else {
     issues.push_back({true, "[Device] ProdName is missing; the header cannot state the Identity object without it"});
   }
-  // Identity attribute 7 holds at most 32 characters; a scanner matches
-  // vendor, type, code and major revision, so a shortened name is harmless.
-  if (id.product_name.size() > max_product_name) {
+  // Identity attribute 7 holds at most 32 bytes; a scanner matches vendor,
+  // type, code and major revision, so a shortened name is harmless. It ends
+  // between two characters, so the device never shows half of one.
+  if (id.product_name.size() > cip::max_product_name) {
+    const auto kept = utf8::cut(id.product_name, cip::max_product_name).size();
     issues.push_back({false, fmt::format("[Device] ProdName is {} bytes; the Identity object's Product Name holds at "
-                                         "most {}, so the header carries its first {}",
-                                         id.product_name.size(), max_product_name, max_product_name)});
-    id.product_name.resize(max_product_name);
+                                         "most {}, so the header carries its first {}{}",
+                                         id.product_name.size(), cip::max_product_name, kept,
+                                         kept < cip::max_product_name
+                                             ? fmt::format(" ({} would cut a character in two)", cip::max_product_name)
+                                             : "")});
+    id.product_name.resize(kept);
   }
   id.catalog = text_of(d.catalog);
   id.vendor_name = text_of(d.vend_name);

@@ -2,6 +2,7 @@
 
 #include "cst/cst.hpp"
 #include "emit/json_values.hpp"
+#include "source/utf8.hpp"
 
 namespace edsc::emit::detail {
 
@@ -12,23 +13,6 @@ constexpr char16_t cp1252[32] = {
     0x20AC, 0, 0x201A, 0x0192, 0x201E, 0x2026, 0x2020, 0x2021, 0x02C6, 0x2030, 0x0160, 0x2039,
     0x0152, 0, 0x017D, 0, 0, 0x2018, 0x2019, 0x201C, 0x201D, 0x2022, 0x2013, 0x2014,
     0x02DC, 0x2122, 0x0161, 0x203A, 0x0153, 0, 0x017E, 0x0178};
-
-bool valid_utf8(std::string_view s) {
-  for (std::size_t i = 0; i < s.size();) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    std::size_t n = 0;
-    if (c < 0x80) n = 0;
-    else if (c >= 0xC2 && c <= 0xDF) n = 1;
-    else if (c >= 0xE0 && c <= 0xEF) n = 2;
-    else if (c >= 0xF0 && c <= 0xF4) n = 3;
-    else return false;
-    if (n > 0 && i + n >= s.size()) return false;
-    for (std::size_t k = 1; k <= n; ++k)
-      if ((static_cast<unsigned char>(s[i + k]) >> 6) != 2) return false;
-    i += n + 1;
-  }
-  return true;
-}
 
 void put(std::string& out, char32_t cp) {
   if (cp < 0x80) {
@@ -62,7 +46,7 @@ std::string_view segment_name(model::segment_kind k) {
 }  // namespace
 
 std::string to_utf8(std::string_view s) {
-  if (valid_utf8(s)) return std::string(s);
+  if (utf8::is_utf8(s)) return std::string(s);
   std::string out;
   out.reserve(s.size() + 8);
   for (char ch : s) {

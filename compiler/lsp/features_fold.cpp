@@ -33,7 +33,8 @@ void comment_blocks(const cst::tree& t, std::vector<fold>& out) {
   };
   for (const auto tok : t.tokens) {
     switch (tok.kind) {
-      case cst::token_kind::blank: break;
+      case cst::token_kind::blank:
+      case cst::token_kind::bom: break;
       case cst::token_kind::newline:
         line_start = true;
         if (++breaks > 1) close();  // a blank line ends the block

@@ -80,8 +80,8 @@ class checker {
     p.input_start = net.scan.input_start.value;
     p.output_start = net.scan.output_start.value;
     lengths(net);
-    for (const auto& n : net.nodes) {
-      auto planned = plan_node(n);
+    for (std::size_t i = 0; i < net.nodes.size(); ++i) {
+      auto planned = plan_node(net.nodes[i], i);
       if (planned)
         p.nodes.push_back(std::move(*planned));
       else
@@ -91,10 +91,10 @@ class checker {
     std::stable_sort(p.nodes.begin(), p.nodes.end(),
                      [](const planned_node& a, const planned_node& b) { return a.mac < b.mac; });
     identities(p);
-    if (plannable) {
-      placements(p);
-      out_.result = std::move(p);
-    }
+    // The nodes left out only ever make room: the overlaps and overflows
+    // found among the others are there whatever the rest of the file says.
+    if (p.profile != nullptr) placements(p);
+    if (plannable) out_.result = std::move(p);
   }
 
  private:
@@ -147,11 +147,12 @@ class checker {
     return o;
   }
 
-  std::optional<planned_node> plan_node(const network::node& n) {
-    if (!n.mac.given || !n.name.given) return std::nullopt;
+  // A node without a usable MAC ID or name is still checked (its EDS, its
+  // connections) but not planned.
+  std::optional<planned_node> plan_node(const network::node& n, std::size_t index) {
     planned_node pn;
     pn.mac = n.mac.value;
-    pn.name = n.name.value;
+    pn.name = n.name.given ? n.name.value : fmt::format("[[node]] {}", index + 1);
     pn.key = n.key.value;
     pn.where = n.where;
     if (n.input_dword.given) pn.input_dword = n.input_dword.value, pn.input_dword_where = n.input_dword.where;
@@ -189,7 +190,7 @@ class checker {
         pn.identity = identity_values{id.vendor.value, id.device_type.value, id.product_code.value, id.major.value,
                                       id.minor.value};
     }
-    if (!connections(n, offer, pn)) return std::nullopt;
+    if (!connections(n, offer, pn) || !n.mac.given || !n.name.given) return std::nullopt;
     return pn;
   }
 

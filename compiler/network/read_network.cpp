@@ -34,23 +34,25 @@ class reader {
     }
     network_file net;
     expect_keys(root, {"network", "scanner", "node"});
+    // Without [network] or its kind, the rest is still read as the one kind
+    // edsc plans, so its errors show in the same run.
     const auto* header = root.get_as<toml::table>("network");
     if (header == nullptr) {
       if (const auto* n = root.get("network"); n != nullptr)
         add(diag_id::net_key_type, region(n->source()), "network must be a table: [network]");
       else
         add(diag_id::net_key_missing, {0, 0}, "the file has no [network] table (kind, name, baud)");
-      return std::move(out_);
+    } else {
+      net.where = region(header->source());
+      read_string(*header, "kind", net.kind, true);
+      if (net.kind.given && net.kind.value != "devicenet") {
+        add(diag_id::net_kind_unsupported, net.kind.where,
+            fmt::format("network kind \"{}\" cannot be planned yet; edsc plans kind = \"devicenet\"",
+                        net.kind.value));
+        return std::move(out_);
+      }
+      read_network_table(*header, net);
     }
-    net.where = region(header->source());
-    read_string(*header, "kind", net.kind, true);
-    if (!net.kind.given) return std::move(out_);
-    if (net.kind.value != "devicenet") {
-      add(diag_id::net_kind_unsupported, net.kind.where,
-          fmt::format("network kind \"{}\" cannot be planned yet; edsc plans kind = \"devicenet\"", net.kind.value));
-      return std::move(out_);
-    }
-    read_network_table(*header, net);
     read_scanner(root, net);
     read_nodes(root, net);
     out_.net = std::move(net);

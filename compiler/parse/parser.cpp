@@ -44,6 +44,9 @@ template <> struct action<g::newline> {
 template <> struct action<g::comment> {
   template <typename I> static void apply(const I& in, state& st) { st.b.trivia(cst::token_kind::comment, st.where(in)); }
 };
+template <> struct action<g::bom> {
+  template <typename I> static void apply(const I& in, state& st) { st.b.trivia(cst::token_kind::bom, st.where(in)); }
+};
 
 EDSC_TOKEN_ACTION(lbracket, lbracket)
 EDSC_TOKEN_ACTION(section_name, section_name)

@@ -17,6 +17,7 @@
 #include "cip/device_reply.hpp"
 #include "cip/message.hpp"
 #include "sim/objects.hpp"
+#include "source/utf8.hpp"
 
 namespace edsc::sim {
 
@@ -103,7 +104,7 @@ int compare(const schema::cip_type_info& t, cip::byte_view a, cip::byte_view b) 
 
 std::string short_text(const model::value& v) {
   if (!v.ok() || v.kind != model::value_kind::string) return {};
-  return std::string(v.text.substr(0, 255));
+  return std::string(utf8::cut(v.text, 255));  // a SHORT_STRING's length is one byte
 }
 
 template <class T>

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "source/line_starts.hpp"
+#include "source/utf8.hpp"
 
 namespace edsc {
 
@@ -32,13 +33,15 @@ line_col source_file::position(std::uint32_t offset) const {
   offset = std::min<std::uint32_t>(offset, size());
   const auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
   const auto line = static_cast<std::uint32_t>(it - line_starts_.begin());
-  return {line, offset - line_starts_[line - 1] + 1};
+  // A byte-order mark is no column: the first line's text starts after it.
+  const std::uint32_t begin = line == 1 ? std::min(utf8::bom_length(view_), offset) : line_starts_[line - 1];
+  return {line, offset - begin + 1};
 }
 
 std::string_view source_file::line_text(std::uint32_t line) const {
   index_lines();
   if (line == 0 || line > line_starts_.size()) return {};
-  const std::uint32_t begin = line_starts_[line - 1];
+  const std::uint32_t begin = line == 1 ? utf8::bom_length(view_) : line_starts_[line - 1];
   std::uint32_t end = line < line_starts_.size() ? line_starts_[line] : size();
   while (end > begin && (view_[end - 1] == '\n' || view_[end - 1] == '\r')) --end;
   return view_.substr(begin, end - begin);

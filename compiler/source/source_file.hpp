@@ -13,7 +13,7 @@ namespace edsc {
 
 struct line_col {
   std::uint32_t line = 1;    // 1-based
-  std::uint32_t column = 1;  // 1-based, counted in bytes
+  std::uint32_t column = 1;  // 1-based, counted in bytes; a byte-order mark counts none
 };
 
 // The bytes of one input file and its display path. Line starts are computed
@@ -41,7 +41,8 @@ class source_file {
   [[nodiscard]] bool changed() const { return changed_ != nullptr && changed_->load(std::memory_order_acquire); }
 
   [[nodiscard]] line_col position(std::uint32_t offset) const;
-  // The physical line holding `line` (1-based), without its line terminator.
+  // The physical line holding `line` (1-based), without its line terminator
+  // (nor, on line 1, a byte-order mark).
   [[nodiscard]] std::string_view line_text(std::uint32_t line) const;
   [[nodiscard]] std::uint32_t line_count() const;
 

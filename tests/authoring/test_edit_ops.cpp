@@ -1,5 +1,7 @@
 // Edit operations on the lossless tree: what changes, what stays byte for
 // byte, and the errors that name the valid choices.
+#include <tuple>
+
 #include "authoring_support.hpp"
 #include "edit/analyze.hpp"
 #include "edit/editor.hpp"
@@ -171,6 +173,25 @@ TEST(EditOps, SectionNamesTheEditorAccepts) {
       EXPECT_NE(std::string(e.what()).find("is not a section name"), std::string::npos) << e.what();
     }
     EXPECT_EQ(ed.text(), small) << bad;
+  }
+}
+
+// A byte-order mark is no line: removing the first section or adding one to
+// a file that holds nothing else keeps it, and the rest comes out as it
+// would without it.
+TEST(EditOps, AByteOrderMarkStaysInFront) {
+  const std::string bom = "\xEF\xBB\xBF";
+  for (const auto& [before, op, after] : std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"", "add", "[Extra]\n"},
+           {"[File]\n    DescText = \"x\";\n\n[Device]\n    MajRev = 1;\n", "remove", "[Device]\n    MajRev = 1;\n"},
+           {"$ c\n[File]\n    DescText = \"x\";\n", "add", "$ c\n[File]\n    DescText = \"x\";\n\n[Extra]\n"}}) {
+    for (const auto& mark : {std::string(), bom}) {
+      SCOPED_TRACE(before + op + std::to_string(mark.size()));
+      editor ed("t.eds", mark + before);
+      if (op == "add") ed.add_section("Extra");
+      else ed.remove_section("File");
+      EXPECT_EQ(ed.text(), mark + after);
+    }
   }
 }
 

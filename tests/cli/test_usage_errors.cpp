@@ -52,7 +52,6 @@ TEST(UsageErrors, EachKindIsSaidInEdscsWords) {
       {{"check", eds, "--format"}, "edsc: error: --format needs a value (text|json|sarif)\n"},
       // Two options that exclude each other.
       {{"fmt", "-i", "-o", "x", eds}, "edsc: error: -o/--output and -i/--in-place cannot be given together\n"},
-      {{"new", "--from", "x.json", "--vendor", "3"}, "edsc: error: --from and --vendor cannot be given together\n"},
       // A value for a flag; a value that is not one of the choices.
       {{"dump", eds, "--json=maybe"}, "edsc: error: --json takes no value (given 'maybe')\n"},
       {{"check", "--format", "xml", eds}, "edsc: error: --format: 'xml' is not one of text|json|sarif\n"},

@@ -3,6 +3,7 @@
 // inputs the browser tests render.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "check/check_file.hpp"
 #include "doc/render.hpp"
@@ -59,5 +60,30 @@ inline constexpr const char* hostile_eds = R"([File]
     Connection1 = 0x84010002, 0x44640405, 10000, , Assem100, 20000, , Assem100, , , , ,
         "Exclusive <Owner>", "", "20 04 24 01 2C 64 2C 64";
 )";
+
+// File names a library may hold that a link must carry as they are: URL
+// syntax (# ? % & : \\), HTML syntax (quotes, <), spaces and line breaks,
+// UTF-8, a Latin-1 byte that is not UTF-8, a leading '-'.
+inline const std::vector<std::string> awkward_names{
+    "d\xC3\xA9v #1?.eds", "two words.eds", "hash#.eds",      "query?x=1.eds",  "percent%41.eds",
+    "amp&amp;.eds",       "quote\".eds",   "apos'.eds",      "lt<gt>.eds",     "latin\xE9.eds",
+    "-leading.eds",       "new\nline.eds", "tab\tbed.eds",  "colon:x.eds",    "back\\slash.eds",
+    "plus+semi;.eds",     "[brackets].eds", "%2Fslash.eds",
+};
+
+// A small valid EDS whose product name tells its page apart.
+inline std::string named_eds(const std::string& product) {
+  return "[File]\nDescText = \"x\";\nCreateDate = 01-01-2020;\nCreateTime = 00:00:00;\nRevision = 1.0;\n"
+         "[Device]\nVendCode = 65535;\nVendName = \"edsc-example\";\nProdType = 100;\n"
+         "ProdTypeStr = \"Vendor Specific\";\nProdCode = 1;\nMajRev = 1;\nMinRev = 1;\nProdName = \"" +
+         product + "\";\n";
+}
+
+// `awkward_names` in `dir`, the i-th with the product name "Page i".
+inline void write_awkward_library(const fs::path& dir) {
+  fs::create_directories(dir);
+  for (std::size_t i = 0; i < awkward_names.size(); ++i)
+    test::write_text(dir / awkward_names[i], named_eds("Page " + std::to_string(i)));
+}
 
 }  // namespace edsc::doc_test

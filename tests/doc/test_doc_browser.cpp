@@ -33,14 +33,14 @@ struct browser_view {
 // Chromium logs each console message (console.log/error, uncaught
 // exceptions, failed loads) to stderr as "INFO:CONSOLE..." with
 // --enable-logging=stderr; our pages log nothing, so any such line is a fault.
-browser_view load(const std::string& browser, const fs::path& page) {
+browser_view load_url(const std::string& browser, const std::string& url) {
   temp_dir profile("doc-chromium");
   const auto err = profile.path() / "stderr";
   const auto dom = profile.path() / "dom";
   // Grouped, so run_shell's own 2>&1 cannot take stderr from the file.
   const auto cmd = "{ timeout 120 " + test::quoted(fs::path(browser)) + " --headless --disable-gpu --no-sandbox --no-first-run " +
                    "--user-data-dir=" + quoted(profile.path() / "p") + " --enable-logging=stderr --v=0 --dump-dom " +
-                   test::quoted(fs::path("file://" + fs::absolute(page).string())) + " >" + quoted(dom) + " 2>" + quoted(err) + "; }";
+                   test::quoted(fs::path(url)) + " >" + quoted(dom) + " 2>" + quoted(err) + "; }";
   browser_view v;
   v.ran = run_shell(cmd).status == 0;
   v.dom = read_text(dom);
@@ -48,6 +48,10 @@ browser_view load(const std::string& browser, const fs::path& page) {
   for (std::string line; std::getline(lines, line);)
     if (line.find(":CONSOLE") != std::string::npos) v.console.push_back(line);
   return v;
+}
+
+browser_view load(const std::string& browser, const fs::path& page) {
+  return load_url(browser, "file://" + fs::absolute(page).string());
 }
 
 bool screenshot(const std::string& browser, const fs::path& page, const std::string& name, int height = 2400) {
@@ -285,6 +289,50 @@ TEST_F(DocBrowser, LibraryIndex) {
   EXPECT_NE(v.dom.find("<h1>60 EDS files</h1>"), std::string::npos);
   EXPECT_NE(v.dom.find("Allen-Bradley"), std::string::npos);
   EXPECT_TRUE(screenshot(browser_, site / "index.html", "library-index", 1600));
+}
+
+// Chromium resolves each link of the index of a library whose file names
+// are awkward for a URL (doc_support.hpp), follows it, and finds the page of
+// that file: the heading is the file's product name, the link's text.
+TEST_F(DocBrowser, IndexLinksOfAwkwardNames) {
+  write_awkward_library(dir_.path() / "lib");
+  const auto site = dir_.path() / "site";
+  const auto r = run_shell(test::edsc_command() + " doc " + quoted(dir_.path() / "lib") + " -o " + quoted(site));
+  ASSERT_EQ(r.status, 0) << r.output;
+  // A copy of the index beside it (the same relative links) lists them as resolved.
+  auto html = read_text(site / "index.html");
+  html.insert(html.rfind("</body>"),
+              "<script>var o=[];document.querySelectorAll('#library a').forEach(function(a){"
+              "o.push(encodeURIComponent(a.textContent)+' '+encodeURIComponent(a.href));});"
+              "document.body.setAttribute('data-links',o.join(' '));</script>");
+  const auto probe = site / "probe.html";
+  test::write_text(probe, html);
+  const auto v = load(browser_, probe);
+  ASSERT_TRUE(v.ran);
+  EXPECT_TRUE(v.console.empty()) << v.console.front();
+  const auto at = v.dom.find("data-links=\"");
+  ASSERT_NE(at, std::string::npos);
+  std::istringstream links(v.dom.substr(at + 12, v.dom.find('"', at + 12) - at - 12));
+  const auto decoded = [](const std::string& s) {  // encodeURIComponent undone
+    std::string out;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      if (s[i] == '%' && i + 2 < s.size()) {
+        out += static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16));
+        i += 2;
+      } else {
+        out += s[i];
+      }
+    }
+    return out;
+  };
+  std::size_t n = 0;
+  for (std::string text, url; links >> text >> url; ++n) {
+    text = decoded(text);
+    url = decoded(url);
+    const auto page = load_url(browser_, url);
+    EXPECT_NE(page.dom.find("<h1>" + text + "</h1>"), std::string::npos) << text << ": " << url;
+  }
+  EXPECT_EQ(n, awkward_names.size());
 }
 
 }  // namespace

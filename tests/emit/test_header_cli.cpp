@@ -99,6 +99,38 @@ TEST(HeaderCli, LongProductNamesAreShortenedWithAWarning) {
   EXPECT_NE(r.output.find("#define EDS_PRODUCT_NAME \"ABB EtherNet/IP Anybus Adapter D\""), std::string::npos);
 }
 
+// Identity attribute 7 holds 32 bytes: a UTF-8 name is cut before the
+// character that would not fit whole, a Latin-1 one at byte 32.
+TEST(HeaderCli, LongProductNamesAreCutBetweenCharacters) {
+  temp_dir dir("prodname-cut");
+  std::string text = read_text(diffuse);
+  const auto at = text.find("ProdName");
+  const auto end = text.find(';', at);
+  const auto with_name = [&](const std::string& name) {
+    auto t = text;
+    t.replace(at, end - at, "ProdName = \"" + name + "\"");
+    const auto path = dir.path() / "named.eds";
+    write_text(path, t);
+    return header(quoted(path) + " -o -");
+  };
+  const std::string ascii31(31, 'a');
+  auto r = with_name(ascii31 + "\xC3\xA9");  // 33 bytes, 32 characters
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("#define EDS_PRODUCT_NAME \"" + ascii31 + "\"\n"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("#define EDS_PRODUCT_NAME_LENGTH 31u"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("ProdName is 33 bytes; the Identity object's Product Name holds at most 32, so the header "
+                          "carries its first 31 (32 would cut a character in two)"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(r.output.find("\\303\""), std::string::npos) << r.output;
+  r = with_name(ascii31 + "a\xE9");  // Latin-1: every byte a character
+  EXPECT_NE(r.output.find("#define EDS_PRODUCT_NAME \"" + ascii31 + "a\"\n"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("carries its first 32\n"), std::string::npos) << r.output;
+  r = with_name(std::string(30, 'a') + "\xC3\xA9");  // 32 bytes: fits
+  EXPECT_EQ(r.output.find("ProdName is"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("#define EDS_PRODUCT_NAME_LENGTH 32u"), std::string::npos) << r.output;
+}
+
 TEST(HeaderCli, TemplateDirOverridesOnlyTheFilesItHolds) {
   temp_dir dir("templates");
   write_text(dir.path() / "header_cip.mustache", "/* no CIP codes, {{prefix}} */\n");

@@ -107,6 +107,19 @@ INSTANTIATE_TEST_SUITE_P(Sections, BadSectionName,
                                            bad_name{"Comma", "[A,B]", "','"}),
                          [](const auto& info) { return std::string(info.param.label); });
 
+// A malformed header runs to the last `]` of its line: `[[Foo]]` is one
+// header with one error, not a header and a stray `]`; its empty name
+// stands where the header does, not at the start of the file.
+TEST(Sections, DoubledBracketsAreOneMalformedHeader) {
+  const auto p = parse_text("$ c\n[[Foo]]\nA = 1;\n[A*] ] $ note\n");
+  EXPECT_EQ(p.diag_list(), (strings{"syntax-section-header@2:2", "syntax-section-header@4:2"}));
+  ASSERT_EQ(p.tree().sections.size(), 2u);
+  EXPECT_EQ(p.text(p.tree().sections[0].header), "[[Foo]]");
+  EXPECT_EQ(p.tree().sections[0].name, (span{5, 5}));
+  EXPECT_EQ(p.text(p.tree().sections[1].header), "[A*] ]");
+  EXPECT_EQ(p.count(cst::token_kind::comment), 2u);
+}
+
 TEST(Sections, EachSectionOwnsItsEntriesAndTrivia) {
   const auto p = parse_text("[A]\nX = 1;\n$ c\n[B]\nY = 2;\nZ = 3;\n");
   ASSERT_EQ(p.tree().sections.size(), 2u);

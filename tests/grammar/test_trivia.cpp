@@ -108,5 +108,28 @@ TEST(Trivia, TriviaAfterAnEntryBelongsToTheSectionNotTheEntry) {
   EXPECT_EQ(p.text(p.tree().sections[0].where), "[S]\nA = 1; $ note\n\n");
 }
 
+// A UTF-8 byte-order mark (what Windows editors write) opens the file as one
+// trivia token, as C compilers accept it: no diagnostic, the same tree, and
+// columns of the first line counted from after it.
+TEST(Trivia, Utf8ByteOrderMarkAtTheStartIsTrivia) {
+  const auto p = parse_text("\xEF\xBB\xBF$ c\n[S]\nA = 1 \"x\";\n");
+  EXPECT_EQ(p.diag_list(), strings{"syntax-missing-comma@3:6"});
+  EXPECT_EQ(p.tokens().front(), "bom:\xEF\xBB\xBF");
+  EXPECT_TRUE(cst::is_trivia(p.tree().tokens[0].kind));
+  EXPECT_EQ(p.tokens()[1], "comment:$ c");
+  const auto q = parse_text("\xEF\xBB\xBF[S] 9\n");
+  EXPECT_EQ(q.section_names(), strings{"S"});
+  EXPECT_EQ(q.diag_list(), strings{"syntax-stray@1:5"});
+}
+
+TEST(Trivia, Utf8ByteOrderMarkElsewhereIsStrayText) {
+  // Only a file's first bytes are a byte-order mark; inside, it is text
+  // (two files concatenated, say), reported like any other stray bytes.
+  const auto p = parse_text("[S]\n\xEF\xBB\xBF" "A = 1;\n");
+  EXPECT_EQ(p.diag_list(), strings{"syntax-stray@2:1"});
+  const auto q = parse_text("\xEF\xBB\xBF\xEF\xBB\xBF[S]\n");
+  EXPECT_EQ(q.diag_list(), strings{"syntax-stray@1:1"});
+}
+
 }  // namespace
 }  // namespace edsc::test

@@ -242,5 +242,42 @@ TEST(LspFormatting, IsEdscFmtAndRefusesBrokenSyntax) {
   EXPECT_EQ(refused["error"]["code"], -32803) << refused.dump();
 }
 
+// Editors drop a UTF-8 byte-order mark when they read a file; one that keeps
+// it sends U+FEFF as the document's first character, and LSP positions count
+// it as one UTF-16 unit of line 0 like any other character. Formatting keeps it.
+TEST(LspDiagnostics, AByteOrderMarkTheClientKeepsIsOneCharacter) {
+  const std::string bom = "\xEF\xBB\xBF";
+  const std::string text = "[File] DescText = \"x\"\nCreateDate = 01-02-2024;\n";
+  lsp_process p;
+  p.initialize();
+  std::vector<json> published;
+  for (const auto* uri : {"file:///tmp/plain.eds", "file:///tmp/marked.eds"}) {
+    const bool marked = std::string(uri).find("marked") != std::string::npos;
+    p.notify("textDocument/didOpen", json{{"textDocument", {{"uri", uri}, {"languageId", "eds"}, {"version", 1},
+                                                             {"text", marked ? bom + text : text}}}});
+    published.push_back(p.wait_notification("textDocument/publishDiagnostics")["params"]["diagnostics"]);
+  }
+  EXPECT_EQ(find_code(published[1], "syntax-stray"), nullptr) << published[1].dump();
+  ASSERT_EQ(published[1].size(), published[0].size()) << published[1].dump();
+  const auto* plain = find_code(published[0], "syntax-missing-semicolon");
+  const auto* marked = find_code(published[1], "syntax-missing-semicolon");
+  ASSERT_TRUE(plain && marked) << published[1].dump();
+  EXPECT_EQ((*plain)["range"]["start"], (json{{"line", 0}, {"character", 21}}));
+  EXPECT_EQ((*marked)["range"]["start"], (json{{"line", 0}, {"character", 22}}));
+  // Findings on later lines do not move.
+  for (std::size_t i = 0; i < published[0].size(); ++i)
+    if (published[0][i]["range"]["start"]["line"] != 0)
+      EXPECT_EQ(published[1][i]["range"], published[0][i]["range"]) << published[0][i].dump();
+
+  const std::string clean = std::string(EDSC_PROJECT_DIR) + "/eds/rightsight-42ef-diffuse.eds";
+  const std::string messy = bom + "   " + read_bytes(clean);
+  p.notify("textDocument/didOpen",
+           json{{"textDocument", {{"uri", "file:///tmp/m.eds"}, {"languageId", "eds"}, {"version", 1}, {"text", messy}}}});
+  const auto r = p.request("textDocument/formatting", json{{"textDocument", {{"uri", "file:///tmp/m.eds"}}},
+                                                          {"options", {{"tabSize", 2}, {"insertSpaces", true}}}});
+  ASSERT_TRUE(r.contains("result")) << r.dump();
+  EXPECT_EQ(apply_edits(messy, r["result"]), bom + read_bytes(clean));
+}
+
 }  // namespace
 }  // namespace edsc::lsp_test

@@ -28,12 +28,16 @@ TEST_F(Net, NotTomlIsLocatedWhereTheParserStopped) {
 
 TEST_F(Net, KeysOfTheWrongTypeMissingOrUnknown) {
   auto c = check(header() + "[[node]]\nmac = \"8\"\nname = \"a\"\nimput = 1\nkeying = \"strict\"\n");
-  // mac is a string, imput is unknown, keying outside its set; the
-  // node then lacks a usable MAC, so nothing is planned for it.
-  EXPECT_EQ(ids(c.diags), (std::vector<std::string>{"net-key-type", "net-key-unknown", "net-key-type"}));
-  EXPECT_EQ(at(*c.source, c.diags[0]), "12:7");
-  EXPECT_EQ(at(*c.source, c.diags[1]), "14:1");
-  EXPECT_EQ(at(*c.source, c.diags[2]), "15:10");
+  // mac is a string, imput is unknown, keying outside its set; the node
+  // then lacks a usable MAC, so nothing is planned for it, but the rest of
+  // it is still checked: no EDS (a note) and so no connections to take.
+  EXPECT_EQ(ids(c.diags), (std::vector<std::string>{"net-key-missing", "net-key-type", "net-node-without-eds",
+                                                    "net-key-unknown", "net-key-type"}));
+  EXPECT_EQ(at(*c.source, c.diags[0]), "11:1");
+  EXPECT_EQ(at(*c.source, c.diags[1]), "12:7");
+  EXPECT_EQ(at(*c.source, c.diags[3]), "14:1");
+  EXPECT_EQ(at(*c.source, c.diags[4]), "15:10");
+  EXPECT_FALSE(c.result);
   auto missing = check("[network]\nkind = \"devicenet\"\n");
   EXPECT_EQ(ids(missing.diags), (std::vector<std::string>{"net-key-missing", "net-key-missing"}));  // baud, [scanner]
 }
