@@ -16,6 +16,8 @@ extern const char* const captures_dir;
 extern const char* const opener_source_dir;
 extern const char* const opener_binary;
 extern const char* const stack_build_dir;
+extern const char* const install_docdir;
+extern const char* const install_datadir;
 }  // namespace edsc::test_paths
 
 #define EDSC_PROJECT_DIR (::edsc::test_paths::project_dir)
@@ -28,3 +30,5 @@ extern const char* const stack_build_dir;
 #define EDSC_OPENER_SOURCE_DIR (::edsc::test_paths::opener_source_dir)
 #define EDSC_OPENER_BINARY (::edsc::test_paths::opener_binary)
 #define EDSC_STACK_BUILD_DIR (::edsc::test_paths::stack_build_dir)
+#define EDSC_INSTALL_DOCDIR (::edsc::test_paths::install_docdir)
+#define EDSC_INSTALL_DATADIR (::edsc::test_paths::install_datadir)

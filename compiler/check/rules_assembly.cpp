@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "check/context.hpp"
+#include "diag/plural.hpp"
 #include "schema/cip_types.hpp"
 
 namespace edsc {
@@ -57,8 +58,8 @@ void check_total(const check_context& ctx, const model::assembly& a) {
   // Members that add up to the Size itself were counted in bytes, not bits.
   // No fix-it: either side may be the wrong one.
   ctx.report(diag_id::assembly_size_mismatch, ctx.where(a.size),
-                       fmt::format("{} Size is {} bytes ({} bits) but its members add up to {} bits{}", assembly_name(a),
-                                   bytes, 8 * bytes, bits,
+                       fmt::format("{} Size is {} ({} bits) but its members add up to {}{}", assembly_name(a),
+                                   plural(bytes, "byte"), 8 * bytes, plural(bits, "bit"),
                                    bits == bytes ? " (the member sizes look like bytes; they count bits)" : ""));
 }
 
@@ -91,8 +92,8 @@ void check_member_widths(const check_context& ctx, const model::assembly& a) {
       const auto inner_bytes = assembly_bytes(*inner);
       if (inner_bytes && bits != 8 * *inner_bytes) {
         ctx.report_with_note(diag_id::assembly_member_assembly_size, ctx.where(m.size),
-                             fmt::format("{} gives member {} {} bit{} but {} is {} bytes ({} bits)", assembly_name(a),
-                                         m.ref.text, bits, bits == 1 ? "" : "s", m.ref.text, *inner_bytes,
+                             fmt::format("{} gives member {} {} but {} is {} ({} bits)", assembly_name(a),
+                                         m.ref.text, plural(bits, "bit"), m.ref.text, plural(*inner_bytes, "byte"),
                                          8 * *inner_bytes),
                              inner->size.present() ? ctx.where(inner->size) : ctx.entry_keyword(inner->from),
                              fmt::format("{} size is given here", m.ref.text));
@@ -105,8 +106,8 @@ void check_member_widths(const check_context& ctx, const model::assembly& a) {
     if (bits == 8u * p.type->size || (bits < 8u * p.type->size && range_fits(p, bits))) continue;
     const bool narrow = bits < 8u * p.type->size;
     ctx.report_with_note(diag_id::assembly_member_param_size, ctx.where(m.size),
-                         fmt::format("{} gives member {} {} bit{} but {} is {} ({} bits){}", assembly_name(a),
-                                     m.ref.text, bits, bits == 1 ? "" : "s", m.ref.text, p.type->name, 8 * p.type->size,
+                         fmt::format("{} gives member {} {} but {} is {} ({} bits){}", assembly_name(a),
+                                     m.ref.text, plural(bits, "bit"), m.ref.text, p.type->name, 8 * p.type->size,
                                      narrow ? " and its range does not fit in fewer" : ""),
                          ctx.where(narrow ? p.max : p.data_type),
                          fmt::format("{} {} is given here", m.ref.text, narrow ? "maximum" : "data type"));
@@ -191,8 +192,7 @@ void check_variants(const check_context& ctx) {
     }
     if (v.choices.size() < 2) {
       ctx.report(diag_id::variant_incomplete, ctx.entry_keyword(v.from),
-                 fmt::format("{} offers {} selection{}; a variant needs at least two", name, v.choices.size(),
-                             v.choices.size() == 1 ? "" : "s"));
+                 fmt::format("{} offers {}; a variant needs at least two", name, plural(v.choices.size(), "selection")));
     }
   }
 }

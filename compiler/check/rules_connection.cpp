@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "check/context.hpp"
+#include "diag/plural.hpp"
 #include "schema/cip_types.hpp"
 
 namespace edsc {
@@ -140,8 +141,8 @@ void check_size(const check_context& ctx, const std::string& cn, const direction
   if (!bytes) return;
   if (d.size.is_integer() && d.size.as_uint() != *bytes) {
     ctx.report_with_note(diag_id::connection_size_format, ctx.where(d.size),
-                         fmt::format("{} {} size is {} bytes but its format {} is {} bytes", cn, d.name,
-                                     d.size.as_uint(), assembly_name(*a), *bytes),
+                         fmt::format("{} {} size is {} but its format {} is {}", cn, d.name,
+                                     plural(d.size.as_uint(), "byte"), assembly_name(*a), plural(*bytes, "byte")),
                          assembly_size_at(ctx, *a), fmt::format("{} size is given here", assembly_name(*a)));
     return;
   }
@@ -151,8 +152,9 @@ void check_size(const check_context& ctx, const std::string& cn, const direction
   const bool above = p->max.is_integer() && p->max.as_int() < static_cast<std::int64_t>(*bytes);
   if (!below && !above) return;
   ctx.report_with_note(diag_id::connection_size_format, ctx.where(d.size),
-                       fmt::format("{} {} size {} ranges {}..{}, which excludes the {} bytes of its format {}", cn,
-                                   d.name, d.size.text, ctx.raw(p->min), ctx.raw(p->max), *bytes, assembly_name(*a)),
+                       fmt::format("{} {} size {} ranges {}..{}, which excludes the {} of its format {}", cn,
+                                   d.name, d.size.text, ctx.raw(p->min), ctx.raw(p->max), plural(*bytes, "byte"),
+                                   assembly_name(*a)),
                        assembly_size_at(ctx, *a), fmt::format("{} size is given here", assembly_name(*a)));
 }
 
@@ -171,7 +173,7 @@ void check_heartbeat(const check_context& ctx, const std::string& cn, const mode
   const auto format = c.cp.ot.real_time_format;
   if (format == 3 && *size != 0) {
     ctx.report(diag_id::connection_heartbeat_size, ctx.where(c.params),
-               fmt::format("{} O->T real-time format is 3 (heartbeat) but O->T carries {} bytes", cn, *size));
+               fmt::format("{} O->T real-time format is 3 (heartbeat) but O->T carries {}", cn, plural(*size, "byte")));
   } else if (format != 3 && *size == 0 && ot.size.present()) {
     ctx.report(diag_id::connection_heartbeat_size, ctx.where(ot.size),
                fmt::format("{} O->T size is 0 but its real-time format is {}, not 3 (heartbeat)", cn, format));

@@ -7,6 +7,7 @@
 
 #include "check/context.hpp"
 #include "check/value_order.hpp"
+#include "diag/plural.hpp"
 
 namespace edsc {
 
@@ -97,8 +98,8 @@ void check_enum_par(const check_context& ctx, const model::enum_par& e) {
   const auto span_of_values = static_cast<std::uint64_t>(p.max.as_int() - p.min.as_int()) + 1;
   if (span_of_values != e.strings.size()) {
     ctx.report(diag_id::enumpar_count, ctx.entry_keyword(e.from),
-               fmt::format("[EnumPar] Param{} lists {} strings for the {} values {} to {}", e.number,
-                           e.strings.size(), span_of_values, ctx.raw(p.min), ctx.raw(p.max)));
+               fmt::format("[EnumPar] Param{} lists {} for the {} {} to {}", e.number, plural(e.strings.size(), "string"),
+                           plural(span_of_values, "value"), ctx.raw(p.min), ctx.raw(p.max)));
   }
 }
 
@@ -107,7 +108,8 @@ void check_groups(const check_context& ctx) {
   for (const auto& g : ctx.dev.groups) {
     if (g.count.is_integer() && g.count.as_uint() != g.members.size()) {
       ctx.report(diag_id::group_count, ctx.where(g.count),
-                 fmt::format("Group{} says {} members but lists {}", g.number, g.count.as_uint(), g.members.size()));
+                 fmt::format("Group{} says {} but lists {}", g.number, plural(g.count.as_uint(), "member"),
+                             g.members.size()));
     }
     for (const auto& m : g.members) {
       if (!m.is_integer()) continue;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "check/context.hpp"
+#include "diag/plural.hpp"
 
 namespace edsc {
 
@@ -36,8 +37,8 @@ void check_data(const check_context& ctx, const model::io_data& d, std::string_v
   if (d.path_size.is_integer() && d.path.ok()) {
     if (const auto* p = ctx.dev.path_of(d.path); p != nullptr && p->byte_count != d.path_size.as_uint()) {
       auto& diag = ctx.report(diag_id::io_info_path_size, ctx.where(d.path_size),
-                              fmt::format("{} path size is {} but the path holds {} bytes", name,
-                                          d.path_size.as_uint(), p->byte_count));
+                              fmt::format("{} path size is {} but the path holds {}", name,
+                                          d.path_size.as_uint(), plural(p->byte_count, "byte")));
       diag.notes.push_back({ctx.where(d.path), "the path is here"});
       diag.fixits.push_back({ctx.where(d.path_size), std::to_string(p->byte_count)});
     }
@@ -47,15 +48,15 @@ void check_data(const check_context& ctx, const model::io_data& d, std::string_v
     const auto bits = d.significant_bits.as_uint();
     if (bits > 8 * bytes) {
       ctx.report(diag_id::io_info_significant_bits, ctx.where(d.significant_bits),
-                 fmt::format("{} declares {} significant bits but carries only {} bytes ({} bits)", name, bits,
-                             bytes, 8 * bytes));
+                 fmt::format("{} declares {} significant bits but carries only {} ({} bits)", name, bits,
+                             plural(bytes, "byte"), 8 * bytes));
     } else if (bits != 0 && bytes > 1 && bits <= 8 * (bytes - 1)) {
       const auto unused = bytes - (bits + 7) / 8;
       ctx.report(diag_id::io_info_significant_bits_low, ctx.where(d.significant_bits),
-                 fmt::format("{} declares {} significant bits for {} bytes: the last {} carr{} nothing; "
+                 fmt::format("{} declares {} for {} bytes: the last {} {} nothing; "
                              "write 0 (all bits) or {}",
-                             name, bits, bytes, unused == 1 ? "byte" : fmt::format("{} bytes", unused),
-                             unused == 1 ? "ies" : "y", 8 * bytes));
+                             name, plural(bits, "significant bit"), bytes, unused == 1 ? "byte" : plural(unused, "byte"),
+                             noun(unused, "carries", "carry"), 8 * bytes));
     }
     if (bytes > 8 && section == "IO_Info") {
       ctx.report(diag_id::io_info_fragmented, ctx.where(d.size),

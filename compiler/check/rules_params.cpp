@@ -4,6 +4,7 @@
 #include "check/context.hpp"
 #include "check/text_length.hpp"
 #include "check/value_order.hpp"
+#include "diag/plural.hpp"
 #include "schema/cip_types.hpp"
 
 namespace edsc {
@@ -36,8 +37,8 @@ void check_type(const check_context& ctx, const model::param& p) {
   }
   if (p.type->size > 0 && p.data_size.is_integer() && p.data_size.as_uint() != p.type->size) {
     ctx.report(diag_id::param_data_size, ctx.where(p.data_size),
-               fmt::format("{} is {} ({} byte{}) but its data size says {}", pname(p), p.type->name,
-                           p.type->size, p.type->size == 1 ? "" : "s", p.data_size.as_uint()));
+               fmt::format("{} is {} ({}) but its data size says {}", pname(p), p.type->name,
+                           plural(p.type->size, "byte"), p.data_size.as_uint()));
   }
 }
 
@@ -97,8 +98,8 @@ void check_link_path(const check_context& ctx, const model::param& p) {
   if (size == bytes) return;
   if (size != 0 && bytes != 0) {
     auto& d = ctx.report(diag_id::param_link_path_size, ctx.where(p.link_path_size),
-                         fmt::format("{} link path size is {} but the path holds {} bytes", pname(p), size,
-                                     bytes));
+                         fmt::format("{} link path size is {} but the path holds {}", pname(p), size,
+                                     plural(bytes, "byte")));
     d.fixits.push_back({ctx.where(p.link_path_size), std::to_string(bytes)});
   } else {
     ctx.report(diag_id::param_link_path_size, ctx.where(size != 0 ? p.link_path_size : p.link_path),

@@ -5,6 +5,7 @@
 
 #include "check/context.hpp"
 #include "check/names.hpp"
+#include "diag/plural.hpp"
 #include "model/visit.hpp"
 
 namespace edsc {
@@ -90,8 +91,8 @@ void check_raw(const check_context& ctx) {
   auto extra = [&](const std::vector<model::value>& fields, std::uint32_t layout, const model::origin& o) {
     if (fields.empty()) return;
     ctx.report(diag_id::too_many_fields, ctx.where(fields.front()),
-               fmt::format("'{}' has {} field{} beyond the {} of its layout", ctx.tree.text(ctx.entry_keyword(o)),
-                           fields.size(), fields.size() == 1 ? "" : "s", layout));
+               fmt::format("'{}' has {} beyond the {} of its layout", ctx.tree.text(ctx.entry_keyword(o)),
+                           plural(fields.size(), "field"), layout));
   };
   for (const auto& p : ctx.dev.params) {
     if (p.kind != model::param_kind::constructed_param) extra(p.extra, 24, p.from);

@@ -2,12 +2,14 @@
 
 #include <fmt/format.h>
 
+#include "diag/plural.hpp"
+
 namespace edsc::cip {
 
 bool reader::need(std::size_t n, const char* field) {
   if (failed_) return false;
   if (b_.size() - pos_ >= n) return true;
-  fail(fmt::format("{} cut short: {} byte{} needed, {} left", field, n, n == 1 ? "" : "s", b_.size() - pos_));
+  fail(fmt::format("{} cut short: {} needed, {} left", field, plural(n, "byte"), b_.size() - pos_));
   return false;
 }
 

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "diag/plural.hpp"
+
 namespace edsc::cip {
 
 void read_identity_fields(reader& r, identity& id) {
@@ -70,7 +72,7 @@ decoded<std::vector<cpf_item>> decode_cpf(byte_view b, std::size_t base) {
     items.push_back(it);
   }
   if (!r.ok()) return r.error();
-  if (r.remaining() != 0) return r.fail(fmt::format("{} byte(s) after the last CPF item", r.remaining()));
+  if (r.remaining() != 0) return r.fail(plural(r.remaining(), "byte") + " after the last CPF item");
   return items;
 }
 

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "cst/cst.hpp"
+#include "diag/plural.hpp"
 #include "diff/context.hpp"
 #include "diff/pairing.hpp"
 
@@ -27,7 +28,7 @@ std::optional<std::uint64_t> size_of(const io_data& d) {
 
 std::string bytes(std::optional<std::uint64_t> n) {
   if (!n) return "an unknown number of bytes";
-  return fmt::format("{} byte{}", *n, *n == 1 ? "" : "s");
+  return plural(*n, "byte");
 }
 
 std::string data_label(const io_data& d) {

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "diag/plural.hpp"
 #include "diff/diff.hpp"
 #include "emit/json_values.hpp"
 
@@ -99,8 +100,8 @@ std::string render_text(const result& r, const analysis& before, const analysis&
       if (!d.consequence.empty()) out += wrap(safe(d.consequence), "  = ");
     }
   }
-  out += fmt::format("\n{} difference{}: {} breaking, {} additive, {} cosmetic\n", r.differences.size(),
-                     r.differences.size() == 1 ? "" : "s", r.count(impact::breaking), r.count(impact::additive),
+  out += fmt::format("\n{}: {} breaking, {} additive, {} cosmetic\n", plural(r.differences.size(), "difference"),
+                     r.count(impact::breaking), r.count(impact::additive),
                      r.count(impact::cosmetic));
   return out;
 }

@@ -9,6 +9,8 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "driver/cli_model.hpp"
+
 namespace edsc::driver {
 
 namespace detail {
@@ -37,7 +39,7 @@ CLI::Option* add_choice(CLI::App* cmd, const std::string& name, T& value,
     return nullptr;
   };
   // Unbound, so CLI11 never converts the word itself: `each` stores it.
-  return cmd->add_option(name, help)
+  return takes(cmd->add_option(name, help), arg_kind::word)
       ->type_name(words)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast)
       ->check(CLI::Validator(

@@ -177,18 +177,22 @@ int run_check(const check_cli& cli) {
 void register_check(CLI::App& app, command_action& run) {
   auto cli = std::make_shared<check_cli>();
   auto* cmd = app.add_subcommand("check", "Parse and check EDS files, reporting problems like a compiler");
-  cmd->add_option("inputs", cli->inputs,
-                  "EDS files, directories searched recursively for *.eds, or '-' for standard input")
+  takes(cmd->add_option("inputs", cli->inputs,
+                        "EDS files, directories searched recursively for *.eds, or '-' for standard input"),
+        arg_kind::eds)
       ->required();
   add_stdin_filename(cmd, cli->stdin_name);
   add_report_options(cmd, cli->color, cli->format, cli->warning_flags);
-  cmd->add_option("--max-errors", cli->max_errors, "Show at most N errors (0: all)");
+  add_number(cmd, "--max-errors", cli->max_errors, std::size_t{0}, std::size_t{1000000}, "Show at most N errors (0: all)");
   add_choice(cmd, "--network", cli->networks,
              {{"devicenet", std::uint8_t{model::net_devicenet}},
               {"ethernetip", std::uint8_t{model::net_ethernetip}},
               {"controlnet", std::uint8_t{model::net_controlnet}}},
              "Check as this network instead of detecting it");
-  cmd->add_option("-j,--jobs", cli->jobs, "Files checked in parallel (default: one per core)");
+  add_number(cmd, "-j,--jobs", cli->jobs, 0u, 1024u, "Files checked in parallel (0, the default: one per core)");
+  add_example(cmd, "edsc check device.eds", "check one file");
+  add_example(cmd, "edsc check --format sarif library/ > edsc.sarif", "check a folder for code scanning in CI");
+  add_example(cmd, "edsc check -Werror -Wno-error=io-info device.eds", "fail on warnings, except those of one group");
   cmd->callback([&run, cli] { run = [cli] { return run_check(*cli); }; });
 }
 

@@ -1,6 +1,7 @@
 // `edsc completions bash|zsh|fish` prints a shell's completion script;
-// `edsc _man DIR` (hidden, for the build) writes the man pages. Both read the
-// command definitions themselves, so they say what --help says.
+// `edsc _man DIR` (hidden, for the build) writes the man pages; `edsc
+// _model` (hidden, for the tests) prints the command line model as JSON.
+// All read the command definitions themselves, so they say what --help says.
 #include <filesystem>
 #include <memory>
 
@@ -28,9 +29,14 @@ void register_completions(CLI::App& app, command_action& run) {
   auto cli = std::make_shared<completions_cli>();
   auto* cmd = app.add_subcommand("completions", "Print the shell completion script for bash, zsh or fish");
   add_choice(cmd, "shell", cli->shell, {"bash", "zsh", "fish"}, "The shell: bash, zsh or fish")->required();
+  add_example(cmd, "edsc completions bash > ~/.local/share/bash-completion/completions/edsc", "install bash's");
   cmd->callback([&run, &app, cli] {
     run = [&app, cli] { return write_result("-", *completion_script(describe(app), cli->shell)); };
   });
+
+  auto* model = app.add_subcommand("_model", "");
+  model->group("");  // what the tests walk to reach every writer and every number
+  model->callback([&run, &app] { run = [&app] { return write_result("-", to_json(describe(app))); }; });
 
   auto* man = app.add_subcommand("_man", "");
   man->group("");  // a build step, not a command for users

@@ -25,13 +25,13 @@ struct diff_cli {
 
 // Reads and analyses one side; null (and the reason printed) when it cannot
 // be compared: unreadable, or syntax errors that leave its model incomplete.
-std::unique_ptr<analysis> load(const std::string& path) {
+std::unique_ptr<analysis> load(const std::string& path, color_mode color) {
   auto file = read_or_report(path);
   if (!file) return nullptr;
   auto a = analyze(std::move(file), {});
   if (a->has_syntax_errors()) {
     std::string report;
-    for (const auto& d : a->syntax) render_text(*a->source, d, text_style{use_color(color_mode::auto_detect, stderr)}, report);
+    for (const auto& d : a->syntax) render_text(*a->source, d, text_style{use_color(color, stderr)}, report);
     write_all(stderr, report);
     print_error(fmt::format("{}: cannot compare: syntax errors leave its model incomplete{}", path, fix_hint(a->syntax)));
     return nullptr;
@@ -44,8 +44,8 @@ std::unique_ptr<analysis> load(const std::string& path) {
 }
 
 int run_diff(const diff_cli& cli) {
-  const auto before = load(cli.before);
-  const auto after = load(cli.after);
+  const auto before = load(cli.before, cli.color);
+  const auto after = load(cli.after, cli.color);
   if (!before || !after) return exit_failure;
   diff::options opt;
   opt.assumed = cli.keying;
@@ -61,14 +61,15 @@ int run_diff(const diff_cli& cli) {
 void register_diff(CLI::App& app, command_action& run) {
   auto cli = std::make_shared<diff_cli>();
   auto* cmd = app.add_subcommand("diff", "Compare two EDS files by meaning and say what breaks a configured network");
-  cmd->add_option("old", cli->before, "The EDS file a network was configured with")->required();
-  cmd->add_option("new", cli->after, "The new EDS file")->required();
+  takes(cmd->add_option("old", cli->before, "The EDS file a network was configured with"), arg_kind::eds)->required();
+  takes(cmd->add_option("new", cli->after, "The new EDS file"), arg_kind::eds)->required();
   add_color_option(cmd, cli->color);
   add_choice(cmd, "--format", cli->format, {"text", "json"},
              "Output format: text (the default) or json (docs/diff-json.schema.json)");
   add_choice(cmd, "--keying", cli->keying, {{"compatible", diff::keying::compatible}, {"exact", diff::keying::exact}},
              "How the scanners check revisions: compatible (the default; a raised minor revision is additive) or "
              "exact (any revision change is breaking)");
+  add_example(cmd, "edsc diff old.eds new.eds", "what a new revision breaks");
   cmd->callback([&run, cli] { run = [cli] { return run_diff(*cli); }; });
 }
 

@@ -14,7 +14,6 @@
 #include "driver/output.hpp"
 #include "io/collect_inputs.hpp"
 #include "io/output_target.hpp"
-#include "io/write_file.hpp"
 
 namespace edsc::driver {
 
@@ -112,12 +111,16 @@ int run_doc(const doc_cli& cli) {
 void register_doc(CLI::App& app, command_action& run) {
   auto cli = std::make_shared<doc_cli>();
   auto* cmd = app.add_subcommand("doc", "Write a readable datasheet of an EDS file, or a site for a folder (docs/doc.md)");
-  cmd->add_option("input", cli->input, "The EDS file, or a folder searched recursively for *.eds")->required();
-  cmd->add_option("-o,--output", cli->output, "The page to write ('-' for standard output), or the site's folder")
+  takes(cmd->add_option("input", cli->input, "The EDS file, or a folder searched recursively for *.eds"), arg_kind::eds)
+      ->required();
+  takes(cmd->add_option("-o,--output", cli->output, "The page to write ('-' for standard output), or the site's folder"),
+        arg_kind::output)
       ->required();
   add_choice(cmd, "--format", cli->format, {{"html", doc::page_format::html}, {"md", doc::page_format::markdown}},
              "html (the default) or md (Markdown, bit maps as SVG files beside it)");
-  cmd->add_option("-j,--jobs", cli->jobs, "Files documented in parallel (default: one per core)");
+  add_number(cmd, "-j,--jobs", cli->jobs, 0u, 1024u, "Files documented in parallel (0, the default: one per core)");
+  add_example(cmd, "edsc doc device.eds -o device.html", "a datasheet");
+  add_example(cmd, "edsc doc library/ -o site/", "a site for a library");
   cmd->callback([&run, cli] { run = [cli] { return run_doc(*cli); }; });
 }
 

@@ -42,10 +42,11 @@ int run_dump(const dump_options& opt) {
 void register_dump(CLI::App& app, command_action& run) {
   auto opt = std::make_shared<dump_options>();
   auto* cmd = app.add_subcommand("dump", "Print the typed model of one EDS file");
-  cmd->add_option("input", opt->input, "The EDS file ('-': standard input)")->required();
+  takes(cmd->add_option("input", opt->input, "The EDS file ('-': standard input)"), arg_kind::eds)->required();
   add_stdin_filename(cmd, opt->stdin_name);
   cmd->add_flag("--json", opt->json, "Write the model as JSON (docs/dump-json.md); currently the only format");
-  cmd->add_option("--indent", opt->indent, "JSON indentation; -1 for one line")->default_val(2);
+  add_number(cmd, "--indent", opt->indent, -1, 16, "JSON indentation in spaces (default 2); -1: one line");
+  add_example(cmd, "edsc dump device.eds | jq .device", "read the typed model");
   cmd->callback([&run, opt] { run = [opt] { return run_dump(*opt); }; });
 }
 

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "diag/plural.hpp"
 #include "diag/render_text.hpp"
 #include "driver/commands.hpp"
 #include "driver/destination.hpp"
@@ -85,8 +86,8 @@ int run_edit(const edit_options& opt) {
     for (const auto& d : fresh) render_text(*after->source, opt.dest.target_name(), d, style, report);
     const auto old_errors = before->errors();
     if (old_errors > 0)
-      report += fmt::format("note: the input already had {} error{} (see edsc check); only new ones block the write\n",
-                            old_errors, old_errors == 1 ? "" : "s");
+      report += fmt::format("note: the input already had {} (see edsc check); only new ones block the write\n",
+                            plural(old_errors, "error"));
     write_all(stderr, report);
     if (count_at_least(fresh, severity::error) > 0 && !opt.force) {
       print_error(fmt::format("{}: not written: the edit introduces the errors above; --force writes anyway",
@@ -116,9 +117,11 @@ void register_edit(CLI::App& app, command_action& run) {
                     "[Variant_IO_Info]"}},
   };
   for (const auto& [name, what] : ops) {
-    auto* o = cmd->add_option(name, opt->values[what.first], what.second)->allow_extra_args(false);
+    auto* o = takes(cmd->add_option(name, opt->values[what.first], what.second), arg_kind::text)->allow_extra_args(false);
     opt->kinds[o] = what.first;
   }
+  add_example(cmd, "edsc edit device.eds --set Device.MajRev=2 --in-place", "change one field, nothing else");
+  add_example(cmd, "edsc edit device.eds --resize Input1=3 -o new.eds", "give a DeviceNet input 3 bytes");
   cmd->callback([&run, opt, cmd] {
     // Operations run in the order they were written on the command line.
     std::map<op_kind, std::size_t> next;

@@ -46,8 +46,8 @@ int run_fix(const fix_options& opt) {
     for (const auto& d : result.remaining)
       render_text(*result.final_source, opt.dest.target_name(), d, style, report);
   }
-  report += fmt::format("{}: {} fix{} applied, {} left without a fix-it ({})\n", src.path(), result.applied.size(),
-                        result.applied.size() == 1 ? "" : "es", plural(result.remaining.size(), "finding"),
+  report += fmt::format("{}: {} applied, {} left without a fix-it ({})\n", src.path(),
+                        plural(result.applied.size(), "fix", "fixes"), plural(result.remaining.size(), "finding"),
                         plural(count_at_least(result.remaining, severity::error), "error"));
   if (!result.converged) report += "edsc: warning: fix-its kept appearing; stopped after several passes\n";
   write_all(stderr, report);
@@ -61,8 +61,10 @@ void register_fix(CLI::App& app, command_action& run) {
   auto opt = std::make_shared<fix_options>();
   auto* cmd = app.add_subcommand("fix", "Apply every certain fix-it of the checker; report what is left");
   opt->dest.add_options(*cmd, "The EDS file to repair");
-  cmd->add_option("-W", opt->warning_flags, "Diagnostic policy, as for check (e.g. -Wpedantic)")->allow_extra_args(false);
+  takes(cmd->add_option("-W", opt->warning_flags, "Diagnostic policy, as for check (e.g. -Wpedantic)"), arg_kind::warning)
+      ->allow_extra_args(false);
   cmd->add_flag("-q,--quiet", opt->quiet, "List the repairs only, not the findings left");
+  add_example(cmd, "edsc fix --in-place device.eds", "apply the certain repairs");
   cmd->callback([&run, opt] { run = [opt] { return run_fix(*opt); }; });
 }
 

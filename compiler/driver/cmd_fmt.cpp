@@ -73,6 +73,8 @@ void register_fmt(CLI::App& app, command_action& run) {
   opt->dest.add_options(*cmd, "The EDS file to format");
   cmd->add_flag("--check", opt->check, "Write nothing; exit 1 when the file is not formatted (for CI)");
   add_choice(cmd, "--eol", opt->eol, {"lf", "crlf"}, "Line endings of the output (default: keep the file's)");
+  add_example(cmd, "edsc fmt --in-place device.eds", "lay the file out canonically");
+  add_example(cmd, "edsc fmt --check device.eds", "fail when it is not (CI)");
   cmd->callback([&run, opt] { run = [opt] { return run_fmt(*opt); }; });
 }
 

@@ -19,7 +19,8 @@ namespace edsc::driver {
 namespace {
 
 struct header_cli {
-  std::string input, output, prefix = "EDS_", serial, template_dir, stdin_name, stack;
+  std::string input, output, prefix = "EDS_", template_dir, stdin_name, stack;
+  std::optional<std::uint32_t> serial;
 };
 
 // `--stack opener`: OUT is a folder that becomes a ready OpENer project
@@ -77,36 +78,12 @@ int run_stack_opener(const header_cli& cli) {
   return exit_ok;
 }
 
-// Decimal or 0x-hexadecimal, at most 32 bits (Identity attribute 6 is a UDINT).
-std::optional<std::uint32_t> parse_serial(const std::string& s) {
-  if (s.empty()) return std::nullopt;
-  const bool hex = s.size() > 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
-  std::uint64_t v = 0;
-  for (std::size_t i = hex ? 2 : 0; i < s.size(); ++i) {
-    const char c = s[i];
-    int d = -1;
-    if (c >= '0' && c <= '9') d = c - '0';
-    else if (hex && c >= 'a' && c <= 'f') d = c - 'a' + 10;
-    else if (hex && c >= 'A' && c <= 'F') d = c - 'A' + 10;
-    if (d < 0) return std::nullopt;
-    v = v * (hex ? 16 : 10) + static_cast<std::uint64_t>(d);
-    if (v > 0xFFFFFFFFull) return std::nullopt;
-  }
-  return static_cast<std::uint32_t>(v);
-}
-
 int run_header(const header_cli& cli) {
   if (cli.stack == "opener") return run_stack_opener(cli);
   emit::header_options opt;
   opt.prefix = cli.prefix;
   opt.template_dir = cli.template_dir;
-  if (!cli.serial.empty()) {
-    opt.serial = parse_serial(cli.serial);
-    if (!opt.serial) {
-      print_error(fmt::format("--serial '{}' is not a number from 0 to 0xFFFFFFFF", cli.serial));
-      return exit_failure;
-    }
-  }
+  opt.serial = cli.serial;
   if (!stdin_filename_used(io::is_stdin(cli.input), cli.stdin_name)) return exit_failure;
   if (refuse_input_as_output(cli.output, {cli.input}) != exit_ok) return exit_failure;
   auto input_file = read_or_report(cli.input, cli.stdin_name);
@@ -140,14 +117,20 @@ int run_header(const header_cli& cli) {
 void register_header(CLI::App& app, command_action& run) {
   auto cli = std::make_shared<header_cli>();
   auto* cmd = app.add_subcommand("header", "Generate the C header firmware needs from one EDS file (docs/header.md)");
-  cmd->add_option("input", cli->input, "The EDS file ('-': standard input)")->required();
+  takes(cmd->add_option("input", cli->input, "The EDS file ('-': standard input)"), arg_kind::eds)->required();
   add_stdin_filename(cmd, cli->stdin_name);
-  cmd->add_option("-o,--output", cli->output, "The header to write ('-' for standard output); with --stack, a folder")->required();
-  cmd->add_option("--prefix", cli->prefix, "Prefix of every macro (a C identifier, may be empty)")
+  takes(cmd->add_option("-o,--output", cli->output, "The header to write ('-' for standard output); with --stack, a folder"),
+        arg_kind::output)
+      ->required();
+  takes(cmd->add_option("--prefix", cli->prefix, "Prefix of every macro (a C identifier, may be empty)"), arg_kind::text)
       ->default_str("EDS_");
-  cmd->add_option("--serial", cli->serial, "Serial number (decimal or 0x...); else the build defines it");
+  add_number(cmd, "--serial", cli->serial, std::uint32_t{0}, std::uint32_t{0xFFFFFFFF},
+             "Serial number (decimal or 0x...); else the build defines it");
   add_choice(cmd, "--stack", cli->stack, {"opener"}, "Generate a ready project for this stack instead; -o names its folder");
-  cmd->add_option("--template-dir", cli->template_dir, "Folder whose *.mustache files replace the built-in ones");
+  takes(cmd->add_option("--template-dir", cli->template_dir, "Folder whose *.mustache files replace the built-in ones"),
+        arg_kind::dir);
+  add_example(cmd, "edsc header device.eds -o device_eds.h", "the header firmware compiles against");
+  add_example(cmd, "edsc header device.eds --stack opener -o device/", "an OpENer project serving the device");
   cmd->callback([&run, cli] { run = [cli] { return run_header(*cli); }; });
 }
 

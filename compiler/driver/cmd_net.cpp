@@ -93,21 +93,25 @@ void register_net(CLI::App& app, command_action& run) {
 
   auto check_cli = std::make_shared<net_cli>();
   auto* check = net->add_subcommand("check", "Check a network file and its nodes' EDS files");
-  check->add_option("network", check_cli->input, "The network file (TOML)")->required();
+  takes(check->add_option("network", check_cli->input, "The network file (TOML)"), arg_kind::toml)->required();
   add_report_options(check, check_cli->color, check_cli->format, check_cli->warning_flags);
+  add_example(check, "edsc net check plant.toml", "judge a DeviceNet network");
   check->callback([&run, check_cli] { run = [check_cli] { return run_net_check(*check_cli); }; });
 
   auto map_cli = std::make_shared<net_cli>();
   auto* map = net->add_subcommand("map", "Lay out the scanner's input and output images as Automap does");
-  map->add_option("network", map_cli->input, "The network file (TOML)")->required();
+  takes(map->add_option("network", map_cli->input, "The network file (TOML)"), arg_kind::toml)->required();
   add_choice(map, "--format", map_cli->map,
              {{"text", map_format::text}, {"json", map_format::json}, {"svg", map_format::svg},
               {"csv", map_format::csv}, {"c", map_format::c}, {"modbus", map_format::modbus}},
              "text (the default), json, svg, csv (RSLogix 5000 alias tags), c (scanlist header), "
              "modbus (register map)");
-  map->add_option("-o,--output", map_cli->output, "Write the map here ('-': standard output, the default)");
+  takes(map->add_option("-o,--output", map_cli->output, "Write the map here ('-': standard output, the default)"),
+        arg_kind::output);
   add_color_option(map, map_cli->color);
-  map->add_option("-W", map_cli->warning_flags, "Diagnostic flags as for check")->allow_extra_args(false);
+  takes(map->add_option("-W", map_cli->warning_flags, "Diagnostic flags as for check"), arg_kind::warning)
+      ->allow_extra_args(false);
+  add_example(map, "edsc net map plant.toml --format svg -o map.svg", "draw the scanner's images");
   map->callback([&run, map_cli] { run = [map_cli] { return run_net_map(*map_cli); }; });
 }
 

@@ -97,18 +97,25 @@ void register_new(CLI::App& app, command_action& run) {
   auto fields = std::make_shared<std::vector<spec_field>>();
   auto& s = opt->spec;
   auto* cmd = app.add_subcommand("new", "Write a complete, valid, formatted EDS for a new device");
-  auto* from = cmd->add_option("--from", opt->from,
-                               "Read the device description from a JSON file (docs/authoring.md); options given "
-                               "with it replace the file's values");
+  auto* from = takes(cmd->add_option("--from", opt->from,
+                                     "Read the device description from a JSON file (docs/authoring.md); options "
+                                     "given with it replace the file's values"),
+                     arg_kind::json);
+  // Text facts; the numbers are 16-bit (identity) or sizes of up to 65535 bytes.
   const auto add = [&](const std::string& name, auto member, const std::string& help) {
-    auto* o = cmd->add_option(name, s.*member, help);
+    auto* o = takes(cmd->add_option(name, s.*member, help), arg_kind::text);
     fields->push_back({o, copier(member)});
     return o;
   };
-  auto* vendor = add("--vendor", &edit::device_spec::vendor, "Vendor ID (ODVA-assigned; 0-65535)");
-  auto* type = add("--product-type", &edit::device_spec::product_type,
-                   "Product type (7 discrete I/O, 100 vendor specific...)");
-  auto* code = add("--product-code", &edit::device_spec::product_code, "Product code (0-65535)");
+  const auto add_u16 = [&](const std::string& name, std::uint32_t edit::device_spec::*member, const std::string& help) {
+    auto* o = add_number(cmd, name, s.*member, 0u, 65535u, help);
+    fields->push_back({o, copier(member)});
+    return o;
+  };
+  auto* vendor = add_u16("--vendor", &edit::device_spec::vendor, "Vendor ID (ODVA-assigned)");
+  auto* type = add_u16("--product-type", &edit::device_spec::product_type,
+                       "Product type (7 discrete I/O, 100 vendor specific...)");
+  auto* code = add_u16("--product-code", &edit::device_spec::product_code, "Product code");
   auto* name = add("--name", &edit::device_spec::name, "Product name");
   add("--vendor-name", &edit::device_spec::vendor_name, "Vendor name (default: \"Vendor <id>\")");
   add("--product-type-name", &edit::device_spec::product_type_name, "Product type text (default: the usual name)");
@@ -118,11 +125,11 @@ void register_new(CLI::App& app, command_action& run) {
   fields->push_back({add_choice(cmd, "--network", s.network, {"devicenet", "ethernetip"},
                                 "The device's network (default: devicenet)"),
                      copier(&edit::device_spec::network)});
-  auto* input = add("--input-bytes", &edit::device_spec::input, "Input bytes (produced by the device)");
-  add("--output-bytes", &edit::device_spec::output, "Output bytes (consumed by the device)");
+  auto* input = add_u16("--input-bytes", &edit::device_spec::input, "Input bytes (produced by the device)");
+  add_u16("--output-bytes", &edit::device_spec::output, "Output bytes (consumed by the device)");
   // The spelling before --input-bytes, kept for scripts (hidden). The old
   // --output N became -o's long form, which every other command uses.
-  auto* old_input = add("--input", &edit::device_spec::input, "")->group("");
+  auto* old_input = add_u16("--input", &edit::device_spec::input, "")->group("");
   add("--connections", &edit::device_spec::connections,
       "DeviceNet connections, first is the default: poll,strobe,cos,cyclic")
       ->delimiter(',');
@@ -133,9 +140,12 @@ void register_new(CLI::App& app, command_action& run) {
   add("--date", &edit::device_spec::date, "Creation date mm-dd-yyyy (default: today), for reproducible builds");
   add("--time", &edit::device_spec::time, "Creation time hh:mm:ss (default: 00:00:00 with --date, else now)");
   add_choice(cmd, "--eol", opt->eol, {"lf", "crlf"}, "Line endings (default: lf)");
-  auto* output = cmd->add_option("-o,--output", opt->output, "Write the file here ('-': standard output, the default)");
+  auto* output = takes(cmd->add_option("-o,--output", opt->output, "Write the file here ('-': standard output, the default)"),
+                       arg_kind::output);
   auto* old_output = cmd->add_option("--output-file", opt->output)->group("");  // -o's old long form (hidden)
   cmd->add_flag("--force", opt->force, "Write even when the result has errors");
+  add_example(cmd, "edsc new --vendor 65535 --product-type 7 --product-code 2 --name 'Sensor' --input-bytes 3 -o sensor.eds",
+              "start the EDS of a new DeviceNet node");
   struct spelling {
     CLI::Option *old_option, *option;
     const char *old_name, *name;

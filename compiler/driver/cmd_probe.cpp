@@ -11,13 +11,14 @@
 
 #include "check/check_file.hpp"
 #include "cip/status.hpp"
+#include "diag/plural.hpp"
 #include "driver/choice.hpp"
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
 #include "driver/verify_live.hpp"
 #include "io/collect_inputs.hpp"
+#include "io/output_target.hpp"
 #include "live/plan.hpp"
-#include "io/write_file.hpp"
 #include "live/probe.hpp"
 #include "live/session.hpp"
 #include "live/upload.hpp"
@@ -96,8 +97,9 @@ std::string render_probe_text(const probe_cli& cli, const live::probe_result& r,
   return out;
 }
 
-// --upload-eds FILE: the device's own EDS from its File object, written
-// atomically; the bytes written, or the problem in words.
+// --upload-eds FILE: the device's own EDS from its File object, written by
+// the output policy (io/output_target.hpp) as every output is; the bytes
+// written, or the problem in words.
 std::variant<std::size_t, std::string> upload_eds(const probe_cli& cli, const live::endpoint& to,
                                                   std::chrono::milliseconds timeout) {
   auto opened = live::session::open(to, timeout);
@@ -107,7 +109,8 @@ std::variant<std::size_t, std::string> upload_eds(const probe_cli& cli, const li
   s.close();
   if (auto* e = live::failed(file)) return "upload of the EDS from the device: " + e->message;
   const auto& bytes = std::get<cip::bytes>(file);
-  if (auto e = io::write_atomically(cli.upload_eds, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size())))
+  std::fflush(stdout);
+  if (auto e = io::write_output(cli.upload_eds, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size())))
     return e->message;
   return bytes.size();
 }
@@ -188,12 +191,14 @@ int run_probe(const probe_cli& cli) {
       j["eds_upload"] = {{"path", cli.upload_eds}, {"size", n}};
       text = j.dump(2) + "\n";
     } else {
-      text += fmt::format("eds upload      {} bytes from File object instance 0x{:X} to {}\n", n, live::eds_file_instance,
-                          cli.upload_eds);
+      text += fmt::format("eds upload      {} from File object instance 0x{:X} to {}\n", plural(n, "byte"),
+                          live::eds_file_instance, io::is_stdout(cli.upload_eds) ? "standard output" : cli.upload_eds);
     }
   }
-  if (!write_all(stdout, text)) return exit_failure;
-  std::fflush(stdout);
+  // The EDS on standard output keeps it clean: the report goes to standard error.
+  std::FILE* report = io::is_stdout(cli.upload_eds) ? stderr : stdout;
+  if (!write_all(report, text)) return exit_failure;
+  std::fflush(report);
   if (uploaded && std::holds_alternative<std::string>(*uploaded)) {
     print_error(std::get<std::string>(*uploaded));
     return exit_failure;
@@ -207,18 +212,22 @@ void register_probe(CLI::App& app, command_action& run) {
   auto cli = std::make_shared<probe_cli>();
   auto* cmd = app.add_subcommand(
       "probe", "Ask a running EtherNet/IP device who it is and how large its assemblies are (docs/live.md)");
-  cmd->add_option("host", cli->host, "The device's address (only this address is contacted)")->required();
-  cmd->add_option("--library", cli->library, "A folder of EDS files: list those that describe the device, with "
-                                             "the keying verdict (exact, compatible, none)")
+  takes(cmd->add_option("host", cli->host, "The device's address (only this address is contacted)"), arg_kind::host)
+      ->required();
+  takes(cmd->add_option("--library", cli->library, "A folder of EDS files: list those that describe the device, with "
+                                                   "the keying verdict (exact, compatible, none)"),
+        arg_kind::dir)
       ->type_name("DIR");
   add_choice(cmd, "--format", cli->format, {"text", "json"}, "Output format: text (the default) or json");
-  cmd->add_option("--timeout", cli->timeout_s, "Seconds to wait for each answer (default 3)")
-      ->check(CLI::Range(0.05, 600.0).description(""))
-      ->type_name("S");
+  add_seconds(cmd, "--timeout", cli->timeout_s, 0.05, 600.0, "Seconds to wait for each answer (default 3)");
   cmd->add_flag("--udp", cli->udp, "Ask the identity by UDP ListIdentity (unicast) instead of TCP");
-  cmd->add_option("--upload-eds", cli->upload_eds,
-                  "Upload the device's own EDS from its File object (class 0x37, instance 0xC8) into FILE")
+  takes(cmd->add_option("--upload-eds", cli->upload_eds,
+                        "Upload the device's own EDS from its File object (class 0x37, instance 0xC8) into FILE "
+                        "('-': standard output, the report then going to standard error)"),
+        arg_kind::output)
       ->type_name("FILE");
+  add_example(cmd, "edsc probe 192.168.1.20 --library eds/", "who the device is, and which EDS files describe it");
+  add_example(cmd, "edsc probe 192.168.1.20 --upload-eds device.eds", "save the EDS the device carries");
   cmd->callback([&run, cli] { run = [cli] { return run_probe(*cli); }; });
 }
 

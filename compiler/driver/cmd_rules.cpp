@@ -44,8 +44,10 @@ int run_rules(const rules_cli& cli) {
 void register_rules(CLI::App& app, command_action& run) {
   auto cli = std::make_shared<rules_cli>();
   auto* cmd = app.add_subcommand("rules", "List the diagnostics edsc can report, or explain one");
-  cmd->add_option("id", cli->id, "Explain this diagnostic");
+  takes(cmd->add_option("id", cli->id, "Explain this diagnostic"), arg_kind::rule);
   cmd->add_flag("--markdown", cli->markdown, "Print as Markdown: the whole catalogue (docs/rules.md), or the one rule named");
+  add_example(cmd, "edsc rules", "list every diagnostic");
+  add_example(cmd, "edsc rules duplicate-entry", "explain one");
   cmd->callback([&run, cli] { run = [cli] { return run_rules(*cli); }; });
 }
 

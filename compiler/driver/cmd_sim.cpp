@@ -111,19 +111,24 @@ void register_sim(CLI::App& app, command_action& run) {
   auto* cmd = app.add_subcommand("sim", "Serve the EDS as a virtual EtherNet/IP device: identity, assemblies, "
                                         "parameters, the EDS for upload, Forward_Open of every ConnectionN, "
                                         "class 1 I/O (docs/sim.md)");
-  cmd->add_option("file", cli->eds, "The EDS file the device is built from")->required();
-  cmd->add_option("--address", cli->address, "IPv4 address to listen on (default 0.0.0.0: every interface)")
+  takes(cmd->add_option("file", cli->eds, "The EDS file the device is built from"), arg_kind::eds)->required();
+  takes(cmd->add_option("--address", cli->address, "IPv4 address to listen on (default 0.0.0.0: every interface)"),
+        arg_kind::text)
       ->type_name("ADDR");
-  cmd->add_option("--port", cli->port, "Encapsulation port, TCP and UDP (default 44818); class 1 I/O stays on UDP 2222")
-      ->type_name("PORT");
-  cmd->add_option("--serial", cli->serial, "Serial number the Identity object reports (default 1)")->type_name("N");
-  cmd->add_option("--inputs", cli->inputs,
-                  "JSON or TOML (*.toml) file of fixed input data per assembly (100 or AssemN): hex bytes, or "
-                  "named fields of its members, instead of the counter pattern")
+  add_number(cmd, "--port", cli->port, std::uint16_t{0}, std::uint16_t{65535},
+             "Encapsulation port, TCP and UDP (default 44818); class 1 I/O stays on UDP 2222");
+  add_number(cmd, "--serial", cli->serial, std::uint32_t{0}, std::uint32_t{0xFFFFFFFF},
+             "Serial number the Identity object reports (default 1)");
+  takes(cmd->add_option("--inputs", cli->inputs,
+                        "JSON or TOML (*.toml) file of fixed input data per assembly (100 or AssemN): hex bytes, or "
+                        "named fields of its members, instead of the counter pattern"),
+        arg_kind::file)
       ->type_name("FILE");
   cmd->add_flag("--stdin", cli->control,
                 "Read control lines from standard input (set ASSEMBLY HEX... | set ASSEMBLY FIELD=NUMBER... | "
                 "get ASSEMBLY), each answered by a JSON line");
+  add_example(cmd, "edsc sim device.eds --address 127.0.0.1", "serve the device on this machine alone");
+  add_example(cmd, "edsc sim device.eds --inputs inputs.toml --stdin", "fixed input data, changed while it runs");
   cmd->callback([&run, cli] { run = [cli] { return run_sim(*cli); }; });
 }
 

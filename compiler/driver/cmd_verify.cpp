@@ -104,7 +104,7 @@ int run_verify_network(const verify_cli& cli) {
 // would be silently ignored: say so instead.
 std::vector<std::string> ignored_by_decode(const verify_cli& cli) {
   std::vector<std::string> out;
-  if (!cli.eds.empty()) out.push_back("an EDS file");
+  if (!cli.eds.empty()) out.push_back("EDS file");
   if (!cli.capture.empty()) out.push_back("--capture");
   if (cli.mac >= 0) out.push_back("--mac");
   if (!cli.network.empty()) out.push_back("--network");
@@ -205,16 +205,19 @@ void register_verify(CLI::App& app, command_action& run) {
       "verify",
       "Check a device against its EDS: a DeviceNet device's answers in a CAN capture (docs/verify.md), or a "
       "running EtherNet/IP device with --live (docs/live.md)");
-  cmd->add_option("eds", cli->eds, "The device's EDS file");
-  cmd->add_option("--capture", cli->capture, "CAN log: candump -l/-L, candump screen output, or step/dir/can_id/data TSV");
-  cmd->add_option("--mac", cli->mac, "Compare only the node at this MAC ID (default: every node heard)")
-      ->check(CLI::Range(0, 63).description(""))
-      ->type_name("0..63");
-  cmd->add_option("--network", cli->network,
-                  "Judge every node of this network file (TOML, docs/network.md) instead of one EDS");
-  cmd->add_option("--decode", cli->decode, "Print the decoded conversation of this log as a table, compare nothing");
+  takes(cmd->add_option("eds", cli->eds, "The device's EDS file"), arg_kind::eds);
+  takes(cmd->add_option("--capture", cli->capture, "CAN log: candump -l/-L, candump screen output, or step/dir/can_id/data TSV"),
+        arg_kind::file);
+  add_number(cmd, "--mac", cli->mac, 0, 63, "Compare only the node at this MAC ID (default: every node heard)");
+  takes(cmd->add_option("--network", cli->network,
+                        "Judge every node of this network file (TOML, docs/network.md) instead of one EDS"),
+        arg_kind::toml);
+  takes(cmd->add_option("--decode", cli->decode, "Print the decoded conversation of this log as a table, compare nothing"),
+        arg_kind::file);
   add_verify_live_options(cmd, cli->live);
   add_report_options(cmd, cli->color, cli->format, cli->warning_flags);
+  add_example(cmd, "edsc verify device.eds --capture startup.log", "compare a CAN capture with the EDS");
+  add_example(cmd, "edsc verify --live 192.168.1.20 device.eds", "compare a running EtherNet/IP device with its EDS");
   cmd->callback([&run, cli, cmd] { run = [cli, cmd] { return run_verify(*cli, *cmd); }; });
 }
 

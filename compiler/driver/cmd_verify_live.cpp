@@ -92,21 +92,18 @@ void print_device_error(const std::string& host, const live::net_error& e) {
 }
 
 void add_verify_live_options(CLI::App* cmd, verify_live_cli& cli) {
-  cmd->add_option("--live", cli.host,
-                  "Check the running EtherNet/IP device at this address (TCP 44818) against the EDS (docs/live.md)")
+  takes(cmd->add_option("--live", cli.host,
+                        "Check the running EtherNet/IP device at this address (TCP 44818) against the EDS (docs/live.md)"),
+        arg_kind::host)
       ->type_name("HOST");
   cmd->add_flag("--connections", cli.connections,
                 "With --live: open every ConnectionN as a scanner configured from the EDS would, exchange I/O "
                 "for a few RPIs (outputs idle), then close it. Opening a connection can take the device's "
                 "outputs away from their owner: never on a running machine");
-  cmd->add_option("--timeout", cli.timeout_s, "With --live: seconds to wait for each answer (default 3)")
-      ->check(CLI::Range(0.05, 600.0).description(""))
-      ->type_name("S");
-  cmd->add_option("--watch", cli.watch_s,
-                  "With --live --connections: seconds to watch each open connection's I/O (default: ten RPIs, at "
-                  "least 0.3)")
-      ->check(CLI::Range(0.05, 600.0).description(""))
-      ->type_name("S");
+  add_seconds(cmd, "--timeout", cli.timeout_s, 0.05, 600.0, "With --live: seconds to wait for each answer (default 3)");
+  add_seconds(cmd, "--watch", cli.watch_s, 0.05, 600.0,
+              "With --live --connections: seconds to watch each open connection's I/O (default: ten RPIs, at least "
+              "0.3)");
 }
 
 int run_verify_live(const verify_live_cli& live, const std::string& eds, const std::vector<std::string>& warning_flags,

@@ -3,13 +3,16 @@
 
 #include <CLI/CLI.hpp>
 
+#include "driver/cli_model.hpp"
+
 namespace edsc::driver {
 
 // Exit status shared by every command: what CI scripts rely on.
 enum exit_code : int { exit_ok = 0, exit_findings = 1, exit_failure = 2 };
 
-// Each command registers its subcommand and stores the action to run once
-// the command line has been parsed successfully.
+// Each command registers its subcommand - with what every option takes and
+// its examples (cli_model.hpp) - and stores the action to run once the
+// command line has been parsed successfully.
 using command_action = std::function<int()>;
 
 void register_check(CLI::App& app, command_action& run);

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "driver/cli_model.hpp"
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
 #include "io/output_target.hpp"
@@ -11,8 +12,9 @@
 namespace edsc::driver {
 
 void destination::add_options(CLI::App& cmd, const char* file_help) {
-  cmd.add_option("file", input, fmt::format("{} ('-': standard input)", file_help))->required();
-  auto* out = cmd.add_option("-o,--output", output, "Write the result here ('-': standard output, the default)");
+  takes(cmd.add_option("file", input, fmt::format("{} ('-': standard input)", file_help)), arg_kind::eds)->required();
+  auto* out = takes(cmd.add_option("-o,--output", output, "Write the result here ('-': standard output, the default)"),
+                    arg_kind::output);
   cmd.add_flag("-i,--in-place", in_place, "Replace the input file (atomically)")->excludes(out);
   add_stdin_filename(&cmd, stdin_name);
 }

@@ -9,6 +9,7 @@
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
 #include "driver/suggest.hpp"
+#include "driver/usage_error.hpp"
 #include "edsc_version.hpp"
 
 namespace {
@@ -88,8 +89,7 @@ int run_main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     // One shape for every error, CLI11's included: "edsc: error: ...".
-    if (auto hint = option_hint(app, n, args.data())) print_error(*hint);
-    else print_error(e.what());
+    print_error(usage_message(e, app, n, args.data()));
     return exit_failure;
   }
   return run ? run() : exit_failure;

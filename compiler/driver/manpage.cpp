@@ -1,10 +1,9 @@
 #include "driver/manpage.hpp"
 
-#include <map>
-
 #include <fmt/format.h>
 
 #include "diag/catalogue.hpp"
+#include "edsc_install_dirs.hpp"
 
 namespace edsc::driver {
 
@@ -30,43 +29,6 @@ std::string page_name(const cli_command& c) {
   for (const char ch : c.path) name += ch == ' ' ? '-' : ch;
   if (!c.path.empty()) name.insert(4, "-");
   return name;
-}
-
-struct example {
-  const char* command;
-  const char* what;
-};
-
-// A few typical uses per command, as a user would type them.
-const std::map<std::string, std::vector<example>>& examples() {
-  static const std::map<std::string, std::vector<example>> table{
-      {"check",
-       {{"edsc check device.eds", "check one file"},
-        {"edsc check --format sarif library/ > edsc.sarif", "check a folder for code scanning in CI"},
-        {"edsc check -Werror -Wno-error=io-info device.eds", "fail on warnings, except those of one group"}}},
-      {"rules", {{"edsc rules", "list every diagnostic"}, {"edsc rules duplicate-entry", "explain one"}}},
-      {"edit",
-       {{"edsc edit device.eds --set Device.MajRev=2 --in-place", "change one field, nothing else"},
-        {"edsc edit device.eds --resize Input1=3 -o new.eds", "give a DeviceNet input 3 bytes"}}},
-      {"fix", {{"edsc fix --in-place device.eds", "apply the certain repairs"}}},
-      {"fmt",
-       {{"edsc fmt --in-place device.eds", "lay the file out canonically"},
-        {"edsc fmt --check device.eds", "fail when it is not (CI)"}}},
-      {"new",
-       {{"edsc new --vendor 65535 --product-type 7 --product-code 2 --name 'Sensor' --input-bytes 3 -o sensor.eds",
-         "start the EDS of a new DeviceNet node"}}},
-      {"dump", {{"edsc dump device.eds | jq .identity", "read the typed model"}}},
-      {"header", {{"edsc header device.eds -o device_eds.h", "the header firmware compiles against"}}},
-      {"verify", {{"edsc verify device.eds --capture startup.log", "compare a CAN capture with the EDS"}}},
-      {"lsp", {{"edsc lsp", "started by an editor, not by hand"}}},
-      {"net check", {{"edsc net check plant.toml", "judge a DeviceNet network"}}},
-      {"net map", {{"edsc net map plant.toml --format svg -o map.svg", "draw the scanner's images"}}},
-      {"doc",
-       {{"edsc doc device.eds -o device.html", "a datasheet"}, {"edsc doc library/ -o site/", "a site for a library"}}},
-      {"diff", {{"edsc diff old.eds new.eds", "what a new revision breaks"}}},
-      {"completions", {{"edsc completions bash > ~/.local/share/bash-completion/completions/edsc", "install bash's"}}},
-  };
-  return table;
 }
 
 void add_synopsis(const cli_command& c, std::string& out) {
@@ -106,11 +68,11 @@ const char* exit_status =
     ".TP\n2\nUsage error or I/O failure: a bad option, a missing or unreadable file, an output that would "
     "overwrite an input.\n";
 
+// What each command registered (cli_model.hpp, add_example).
 void add_examples(const cli_command& c, std::string& out) {
-  const auto it = examples().find(c.path);
-  if (it == examples().end()) return;
+  if (c.examples.empty()) return;
   out += ".SH EXAMPLES\n";
-  for (const auto& e : it->second) {
+  for (const auto& e : c.examples) {
     std::string what = e.what;
     what[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(what[0])));
     out += fmt::format(".TP\n.B {}\n{}.\n", roff(e.command), roff(what));
@@ -130,7 +92,7 @@ void add_see_also(const cli_command& top, const cli_command& c, std::string& out
   }
   out += ".SH SEE ALSO\n";
   for (std::size_t i = 0; i < refs.size(); ++i) out += refs[i] + (i + 1 < refs.size() ? ",\n" : "\n");
-  out += ".PP\nThe documentation in /usr/share/doc/edsc/ (cli.md is the command reference).\n";
+  out += fmt::format(".PP\nThe documentation in {}/ (cli.md is the command reference).\n", roff(EDSC_INSTALL_DOCDIR));
 }
 
 std::string rule_list() {
@@ -141,28 +103,38 @@ std::string rule_list() {
   return out;
 }
 
+// The summary without the program's name in front ("edsc: a compiler for
+// ..." at the top), since NAME already starts with it.
+std::string_view summary_of(const cli_command& c) {
+  std::string_view s = c.summary;
+  if (s.starts_with("edsc: ")) s.remove_prefix(6);
+  return s;
+}
+
 std::string page(const cli_command& top, const cli_command& c, const std::string& version) {
   const auto name = page_name(c);
   std::string upper;
   for (const char ch : name) upper += static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
   std::string out = fmt::format(".TH {} 1 \"\" \"edsc {}\" \"edsc manual\"\n", roff(upper), roff(version));
-  out += fmt::format(".SH NAME\n{} \\- {}\n", roff(name), roff(c.summary));
+  out += fmt::format(".SH NAME\n{} \\- {}\n", roff(name), roff(summary_of(c)));
   add_synopsis(c, out);
-  out += ".SH DESCRIPTION\n" + roff(c.summary) + ".\n";
+  out += ".SH DESCRIPTION\n" + roff(summary_of(c)) + ".\n";
   if (!c.subcommands.empty()) {
     out += ".SH COMMANDS\n";
     for (const auto& s : c.subcommands)
-      out += fmt::format(".TP\n\\fB{}\\fR\n{}. See \\fB{}\\fR(1).\n", roff(s.name), roff(s.summary),
-                         roff(s.subcommands.empty() ? page_name(s) : page_name(s.subcommands.front())));
+      out += fmt::format(".TP\n\\fB{}\\fR\n{}. See \\fB{}\\fR(1).\n", roff(s.name), roff(s.summary), roff(page_name(s)));
   }
   add_options(c, out);
   out += exit_status;
   add_examples(c, out);
   if (c.path == "rules") out += rule_list();
   if (c.path.empty())
-    out += ".SH ENVIRONMENT\n.TP\nNO_COLOR\nWhen set, text reports are not coloured (as --color=never).\n";
-  out += ".SH FILES\n.TP\n/usr/share/doc/edsc/\nThe user documentation.\n";
-  if (c.path == "header") out += ".TP\n/usr/share/edsc/templates/\nThe built-in header templates, a start for --template-dir.\n";
+    out += ".SH ENVIRONMENT\n.TP\nNO_COLOR\n" +
+           roff("Set to anything but the empty string, text is not coloured unless --color always asks for it.") + "\n";
+  out += fmt::format(".SH FILES\n.TP\n{}/\nThe user documentation.\n", roff(EDSC_INSTALL_DOCDIR));
+  if (c.path == "header")
+    out += fmt::format(".TP\n{}/edsc/templates/\nThe built-in header templates, a start for --template-dir.\n",
+                       roff(EDSC_INSTALL_DATADIR));
   add_see_also(top, c, out);
   return out;
 }

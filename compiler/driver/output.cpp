@@ -16,7 +16,8 @@ namespace edsc::driver {
 
 bool use_color(color_mode mode, std::FILE* stream) {
   if (mode != color_mode::auto_detect) return mode == color_mode::always;
-  if (std::getenv("NO_COLOR") != nullptr) return false;
+  // no-color.org: present and not empty; --color always or never still decides.
+  if (const char* no = std::getenv("NO_COLOR"); no != nullptr && *no != '\0') return false;
   const char* term = std::getenv("TERM");
   if (term == nullptr || std::string_view(term) == "dumb") return false;
   return ::isatty(::fileno(stream)) != 0;
@@ -45,13 +46,15 @@ void add_report_options(CLI::App* cmd, color_mode& color, report_format& format,
   add_choice(cmd, "--format", format,
              {{"text", report_format::text}, {"json", report_format::json}, {"sarif", report_format::sarif}},
              "Report format: text (the default), json, sarif (SARIF 2.1.0)");
-  cmd->add_option("-W", warning_flags,
-                  "-Werror, -W<id|group>, -Wno-<id|group>, -Werror=<id|group>, -Wno-error=<id|group>")
+  takes(cmd->add_option("-W", warning_flags,
+                        "-Werror, -W<id|group>, -Wno-<id|group>, -Werror=<id|group>, -Wno-error=<id|group>"),
+        arg_kind::warning)
       ->allow_extra_args(false);
 }
 
 void add_stdin_filename(CLI::App* cmd, std::string& name) {
-  cmd->add_option("--stdin-filename", name, "Name standard input ('-') this way in diagnostics (default: <stdin>)")
+  takes(cmd->add_option("--stdin-filename", name, "Name standard input ('-') this way in diagnostics (default: <stdin>)"),
+        arg_kind::text)
       ->type_name("NAME");
 }
 

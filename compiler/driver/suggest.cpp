@@ -33,13 +33,16 @@ const CLI::App* subcommand_named(const CLI::App& app, std::string_view name) {
   return nullptr;
 }
 
+// The commands a user may be told about (not the hidden build steps).
 std::vector<std::string> names_of(const CLI::App& app) {
   std::vector<std::string> out;
-  for (const auto* sub : subcommands_of(app)) out.push_back(sub->get_name());
+  for (const auto* sub : subcommands_of(app))
+    if (!sub->get_group().empty()) out.push_back(sub->get_name());
   return out;
 }
 
-// The innermost command the words name (`net map` -> map), skipping options.
+}  // namespace
+
 const CLI::App& command_named(const CLI::App& app, int argc, const char* const* argv) {
   const CLI::App* at = &app;
   for (int i = 1; i < argc; ++i) {
@@ -49,8 +52,6 @@ const CLI::App& command_named(const CLI::App& app, int argc, const char* const* 
   }
   return *at;
 }
-
-}  // namespace
 
 std::optional<std::string> nearest(std::string_view word, const std::vector<std::string>& choices) {
   std::optional<std::string> best;
@@ -70,14 +71,23 @@ std::optional<std::string> nearest(std::string_view word, const std::vector<std:
 }
 
 std::optional<std::string> unknown_command(const CLI::App& app, int argc, const char* const* argv) {
-  // The top level takes only flags, so its first word is the command.
-  for (int i = 1; i < argc; ++i) {
+  // A command that has commands (edsc, edsc net) takes only flags, so its
+  // first word is one of them.
+  const CLI::App* at = &app;
+  std::string path;
+  for (int i = 1; i < argc && !subcommands_of(*at).empty(); ++i) {
     const std::string_view w = argv[i];
     if (w.starts_with("-")) continue;
-    if (subcommand_named(app, w) != nullptr || w == "help") return std::nullopt;
-    std::string msg = fmt::format("unknown command '{}'", w);
-    if (const auto near = nearest(w, names_of(app))) msg += fmt::format("; did you mean '{}'?", *near);
-    return msg + " (edsc --help lists the commands)";
+    if (at == &app && w == "help") return std::nullopt;
+    const std::string prefix = path.empty() ? "" : path + " ";
+    if (const auto* sub = subcommand_named(*at, w)) {
+      at = sub;
+      path = prefix + std::string(w);
+      continue;
+    }
+    std::string msg = fmt::format("unknown command '{}{}'", prefix, w);
+    if (const auto near = nearest(w, names_of(*at))) msg += fmt::format("; did you mean '{}{}'?", prefix, *near);
+    return msg + fmt::format(" (edsc {}--help lists the commands)", prefix);
   }
   return std::nullopt;
 }

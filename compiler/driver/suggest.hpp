@@ -12,6 +12,9 @@ namespace edsc::driver {
 // a typo of it (as git and cargo suggest); nothing otherwise.
 [[nodiscard]] std::optional<std::string> nearest(std::string_view word, const std::vector<std::string>& choices);
 
+// The innermost command the words name (`net map` -> map), skipping options.
+[[nodiscard]] const CLI::App& command_named(const CLI::App& app, int argc, const char* const* argv);
+
 // Usage mistakes the command line parser would report badly, found before it
 // runs: an unknown command ("unknown command 'chek'; did you mean 'check'?"),
 // also when --help follows it. Returns the message, or nothing.

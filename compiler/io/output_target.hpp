@@ -11,7 +11,9 @@
 namespace edsc::io {
 
 // The one output policy of every command that writes (docs/cli.md, "Output
-// files"). `-` is standard output everywhere.
+// files"), and the only way to write a file: the raw atomic write is internal
+// to it (a test finds any other writer in compiler/). `-` is standard output
+// everywhere.
 [[nodiscard]] inline bool is_stdout(std::string_view path) { return path == "-"; }
 
 // The files a command reads, by device and inode, so that an output naming
@@ -36,6 +38,10 @@ class input_set {
   };
   std::vector<file_id> files_;
 };
+
+// True when both paths name the same existing file (hard links and symlinks
+// included).
+[[nodiscard]] bool same_file(const std::string& a, const std::string& b);
 
 // Writes `bytes` to what `path` names, never replacing anything but a regular
 // file:

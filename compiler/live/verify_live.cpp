@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "cip/status.hpp"
+#include "diag/plural.hpp"
 #include "live/interrupt.hpp"
 #include "live/io.hpp"
 #include "live/plan.hpp"
@@ -158,7 +159,7 @@ struct checker {
       row(check, std::to_string(t.eds_size), std::to_string(size), size == t.eds_size ? verdict::match : verdict::mismatch);
       if (size != t.eds_size)
         diag(diag_id::live_assembly_size, where,
-             fmt::format("assembly instance {} holds {} bytes on the device, {} says {}", t.instance, size,
+             fmt::format("assembly instance {} holds {} on the device, {} says {}", t.instance, plural(size, "byte"),
                          assem_name(*t.assem), t.eds_size));
     }
     return std::nullopt;
@@ -196,11 +197,13 @@ struct checker {
     const bool has_size = o.additional.size() >= 2;
     const unsigned accepted = has_size ? o.additional[1] : 0;
     if (ext == 0x0127 && has_size)
-      return fmt::format("{}: the device accepts {} bytes O->T, the EDS says {} ({} data bytes{})", status, accepted,
-                         p.request.ot.size, p.facts.output_size, p.ot_run_idle ? " + 2 sequence + 4 run/idle" : " + 2 sequence");
+      return fmt::format("{}: the device accepts {} O->T, the EDS says {} ({}{})", status, plural(accepted, "byte"),
+                         p.request.ot.size, plural(p.facts.output_size, "data byte"),
+                         p.ot_run_idle ? " + 2 sequence + 4 run/idle" : " + 2 sequence");
     if (ext == 0x0128 && has_size)
-      return fmt::format("{}: the device accepts {} bytes T->O, the EDS says {} ({} data bytes{})", status, accepted,
-                         p.request.to.size, p.facts.input_size, p.to_run_idle ? " + 2 sequence + 4 run/idle" : " + 2 sequence");
+      return fmt::format("{}: the device accepts {} T->O, the EDS says {} ({}{})", status, plural(accepted, "byte"),
+                         p.request.to.size, plural(p.facts.input_size, "data byte"),
+                         p.to_run_idle ? " + 2 sequence + 4 run/idle" : " + 2 sequence");
     if (ext == 0x0126 || ext == 0x0129)
       return fmt::format("{}: refused the {} bytes of configuration the EDS gives instance {}", status,
                          p.facts.config_size, p.facts.config_instance);
@@ -291,8 +294,8 @@ struct checker {
     if (st.wrong_size > 0) {
       ok = false;
       diag(diag_id::live_io_frames, to_site,
-           fmt::format("{}: {} of {} T->O frames carry {} data bytes, the EDS says {}", name, st.wrong_size, st.frames,
-                       st.a_wrong_size, p.facts.input_size));
+           fmt::format("{}: {} of {} T->O frames carry {}, the EDS says {}", name, st.wrong_size, st.frames,
+                       plural(st.a_wrong_size, "data byte"), p.facts.input_size));
     }
     if (st.without_header > 0) {
       ok = false;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "diag/plural.hpp"
 #include "model/decode.hpp"
 #include "schema/cip_types.hpp"
 
@@ -138,12 +139,13 @@ std::string describe_type_code(std::uint64_t code) {
 }
 
 std::string bytes_and_bits(std::uint64_t bytes) {
-  return fmt::format("{} byte{} ({} bits)", bytes, bytes == 1 ? "" : "s", bytes * 8);
+  return fmt::format("{} ({} bits)", plural(bytes, "byte"), bytes * 8);
 }
 
 std::string bits_and_bytes(std::uint64_t bits) {
-  if (bits % 8 == 0) return fmt::format("{} bits ({} byte{})", bits, bits / 8, bits == 8 ? "" : "s");
-  return fmt::format("{} bits ({} bytes and {} bits)", bits, bits / 8, bits % 8);
+  if (bits < 8) return plural(bits, "bit");
+  if (bits % 8 == 0) return fmt::format("{} bits ({})", bits, plural(bits / 8, "byte"));
+  return fmt::format("{} ({} and {})", plural(bits, "bit"), plural(bits / 8, "byte"), plural(bits % 8, "bit"));
 }
 
 std::string describe_epath(const model::epath& p, const model::device& dev) {
@@ -173,7 +175,7 @@ std::string describe_epath(const model::epath& p, const model::device& dev) {
     }
   }
   if (!p.complete) out += "- **incomplete**: the bytes end inside a segment\n";
-  out += fmt::format("\n{} byte{}{}\n", p.byte_count, p.byte_count == 1 ? "" : "s",
+  out += fmt::format("\n{}{}\n", plural(p.byte_count, "byte"),
                      p.packed ? ", 16/32-bit values without pad bytes" : "");
   return out;
 }

@@ -20,7 +20,7 @@ namespace edsc::lsp {
 // One line per segment: class, instance, attribute, connection point...
 // `dev` resolves [ParamN] placeholders to their names.
 [[nodiscard]] std::string describe_epath(const model::epath& p, const model::device& dev);
-// "4 bytes (32 bits)" / "12 bits (1.5 bytes)"
+// "4 bytes (32 bits)" / "12 bits (1 byte and 4 bits)" / "3 bits"
 [[nodiscard]] std::string bytes_and_bits(std::uint64_t bytes);
 [[nodiscard]] std::string bits_and_bytes(std::uint64_t bits);
 // Bits set beyond `known`, as "bits 7, 12".

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "diag/plural.hpp"
 #include "emit/json_values.hpp"
 #include "lsp/describe.hpp"
 #include "lsp/features.hpp"
@@ -73,7 +74,7 @@ std::string section_hover(const cst::tree& t, const cst::section& s) {
   }
   std::string out = fmt::format("**[{}]** — {}", sd->name, summary_of(*sd));
   if (sd->class_code) out += fmt::format("\n\nCIP object class 0x{:02X}", sd->class_code);
-  out += fmt::format("\n\n{} entr{}", s.entries_count, s.entries_count == 1 ? "y" : "ies");
+  out += "\n\n" + plural(s.entries_count, "entry", "entries");
   return out;
 }
 
@@ -111,7 +112,7 @@ target_text target_detail(const analysis& a, schema::ref_kind kind, std::uint32_
       const auto& as = a.dev.assemblies[i];
       if (as.name.ok()) out.line = fmt::format("\"{}\"", as.name.text);
       if (as.size.is_integer()) out.line += fmt::format(", {}", bytes_and_bits(as.size.magnitude));
-      out.line += fmt::format(", {} member{}", as.members.size(), as.members.size() == 1 ? "" : "s");
+      out.line += ", " + plural(as.members.size(), "member");
       break;
     }
     case ref_kind::connection: {

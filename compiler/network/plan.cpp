@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "diag/plural.hpp"
 #include "emit/header_view.hpp"
 #include "io/read_file.hpp"
 #include "network/layout.hpp"
@@ -169,8 +170,8 @@ class checker {
       }
       if (o.a->errors() > 0) {
         add(diag_id::net_eds_errors, n.eds.where,
-            fmt::format("node '{}': {} has {} error{}; a scanner tool will not register it", pn.name, path,
-                        o.a->errors(), o.a->errors() == 1 ? "" : "s"));
+            fmt::format("node '{}': {} has {}; a scanner tool will not register it", pn.name, path,
+                        plural(o.a->errors(), "error")));
       }
       if (!o.devicenet) {
         add(diag_id::net_connection_not_offered, n.eds.where,
@@ -259,8 +260,8 @@ class checker {
     if (!asked.given) return fallback;
     if (allowed.count(asked.value) == 0) {
       add(diag_id::net_size_not_allowed, asked.where,
-          fmt::format("node '{}': {} {} of {} byte{}; its EDS allows {} for {} ([IO_Info] / [Variant_IO_Info])",
-                      pn.name, name_of(t), input ? "input" : "output", asked.value, asked.value == 1 ? "" : "s",
+          fmt::format("node '{}': {} {} of {}; its EDS allows {} for {} ([IO_Info] / [Variant_IO_Info])",
+                      pn.name, name_of(t), input ? "input" : "output", plural(asked.value, "byte"),
                       size_list(allowed), label_of(t)));
       return fallback;
     }
@@ -326,9 +327,9 @@ class checker {
         out_.diags.push_back(std::move(d));
       } else {
         add(diag_id::net_image_overflow, where,
-            fmt::format("node '{}' needs {} {} byte{} at byte {}, past the {} bytes (DWords 0-{}) of the {} {} slave "
+            fmt::format("node '{}' needs {} {} {} at byte {}, past the {} (DWords 0-{}) of the {} {} slave "
                         "data area",
-                        n.name, pr.size, dir, pr.size == 1 ? "" : "s", pr.offset, image.slave_bytes(),
+                        n.name, pr.size, dir, noun(pr.size, "byte", "bytes"), pr.offset, plural(image.slave_bytes(), "byte"),
                         image.slave_bytes() / 4 - 1, p.profile->name, dir));
       }
     }

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "diag/plural.hpp"
 #include "network/render_map.hpp"
 
 namespace edsc::network {
@@ -75,9 +76,9 @@ std::string render_map_csv(const map_input& m) {
       if (first == nullptr) continue;
       const auto at = place_of(p, *image, *first);
       const auto name = tag_name(node.name, node.mac) + (image->input ? "_I" : "_O");
-      const auto desc = fmt::format("MAC {} {}{}: {} byte{} {}", node.mac, node.name,
-                                    node.product.empty() ? "" : fmt::format(" ({})", node.product), bytes,
-                                    bytes == 1 ? "" : "s", image->input ? "in" : "out");
+      const auto desc = fmt::format("MAC {} {}{}: {} {}", node.mac, node.name,
+                                    node.product.empty() ? "" : fmt::format(" ({})", node.product), plural(bytes, "byte"),
+                                    image->input ? "in" : "out");
       // An alias names the DINT holding the node's first byte.
       const auto spec = fmt::format("Local:{}:{}.Data[{}]", p.slot, image->input ? "I" : "O", at.first_dword);
       out += fmt::format("ALIAS,,{},{},\"\",{},\"(RADIX := Hex, ExternalAccess := Read/Write)\"\n", csv_quote(name),

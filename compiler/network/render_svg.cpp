@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "diag/plural.hpp"
 #include "network/render_map.hpp"
 
 namespace edsc::network {
@@ -45,10 +46,10 @@ int image_svg(const plan& p, const image_layout& image, int top, std::string& ou
   const auto& ip = image.input ? p.profile->input : p.profile->output;
   const int left = margin + label_w;
   const int rows = static_cast<int>((image.capacity + bytes_per_row - 1) / bytes_per_row);
-  out += fmt::format(R"(<text x="{}" y="{}" class="title">{} image Local:{}:{} ({} words): {} of {} slave bytes used</text>)"
+  out += fmt::format(R"(<text x="{}" y="{}" class="title">{} image Local:{}:{} ({}): {} of {} slave {} used</text>)"
                      "\n",
-                     margin, top + 16, image.input ? "Input" : "Output", p.slot, ip.tag, ip.words, image.used(),
-                     image.capacity);
+                     margin, top + 16, image.input ? "Input" : "Output", p.slot, ip.tag, plural(ip.words, "word"),
+                     image.used(), image.capacity, noun(image.capacity, "byte", "bytes"));
   top += 28;
   out += fmt::format(R"(<rect x="{}" y="{}" width="{}" height="{}" class="reserved"/>)"
                      "\n",
@@ -56,9 +57,9 @@ int image_svg(const plan& p, const image_layout& image, int top, std::string& ou
   out += fmt::format(R"(<text x="{}" y="{}" class="small">words 0-{}</text>)"
                      "\n",
                      margin, top + 17, ip.reserved_words - 1);
-  out += fmt::format(R"(<text x="{}" y="{}" class="label">reserved: {} ({} words)</text>)"
+  out += fmt::format(R"(<text x="{}" y="{}" class="label">reserved: {} ({})</text>)"
                      "\n",
-                     left + 8, top + 17, esc(ip.reserved_name), ip.reserved_words);
+                     left + 8, top + 17, esc(ip.reserved_name), plural(ip.reserved_words, "word"));
   top += row_h + 8;
   // Free space first: every byte of the slave area as an empty cell.
   for (int r = 0; r < rows; ++r) {
@@ -84,7 +85,7 @@ int image_svg(const plan& p, const image_layout& image, int top, std::string& ou
     const auto& n = p.nodes[b.node];
     const auto* colour = palette[b.node % palette.size()];
     const auto at = place_of(p, image, b);
-    const auto title = fmt::format("MAC {} {}: {} {} bytes {}-{}, {}", n.mac, n.name, label_of(b.type), b.size,
+    const auto title = fmt::format("MAC {} {}: {} {} {}-{}, {}", n.mac, n.name, label_of(b.type), plural(b.size, "byte"),
                                    b.offset, b.end() - 1, at.tag);
     bool labelled = false;
     for (std::uint32_t byte = b.offset; byte < b.end();) {

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "diag/plural.hpp"
 #include "network/render_map.hpp"
 
 namespace edsc::network {
@@ -19,8 +20,8 @@ std::string word_range(std::uint32_t a, std::uint32_t b) { return a == b ? std::
 void text_image(const plan& p, const image_layout& image, std::string& out) {
   const auto& ip = profile_of(p, image);
   const auto slave_words = ip.words - ip.reserved_words;
-  out += fmt::format("{} image Local:{}:{} ({} words): words 0-{} {}; slave data words {}-{} (DWords 0-{})\n",
-                     image.input ? "input" : "output", p.slot, ip.tag, ip.words, ip.reserved_words - 1,
+  out += fmt::format("{} image Local:{}:{} ({}): words 0-{} {}; slave data words {}-{} (DWords 0-{})\n",
+                     image.input ? "input" : "output", p.slot, ip.tag, plural(ip.words, "word"), ip.reserved_words - 1,
                      ip.reserved_name, ip.reserved_words, ip.words - 1, slave_words / 2 - 1);
   std::size_t name_w = 4;
   for (const auto& b : image.blocks) name_w = std::max(name_w, p.nodes[b.node].name.size());
@@ -56,9 +57,9 @@ block_place place_of(const plan& p, const image_layout& image, const block& b) {
 
 std::string render_map_text(const map_input& m) {
   const auto& p = m.p;
-  std::string out = fmt::format("network {}: {} scanner at MAC {}, slot {}; {} nodes; alignment {}, start DWord {} "
+  std::string out = fmt::format("network {}: {} scanner at MAC {}, slot {}; {}; alignment {}, start DWord {} "
                                 "(input) and {} (output)\n\n",
-                                p.name, p.profile->name, p.scanner_mac, p.slot, p.nodes.size(), name_of(p.align),
+                                p.name, p.profile->name, p.scanner_mac, p.slot, plural(p.nodes.size(), "node"), name_of(p.align),
                                 p.input_start, p.output_start);
   text_image(p, m.l.input, out);
   text_image(p, m.l.output, out);

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "diag/plural.hpp"
+
 namespace edsc::network {
 
 namespace {
@@ -137,9 +139,9 @@ class verifier {
       reported[key] = v_.capture_diags.size();
       v_.capture_diags.push_back(make_diagnostic(
           diag_id::verify_net_io_length, log_.frames[e.frame].where,
-          fmt::format("{} I/O frame {} node '{}' (MAC {}) carries {} byte{} where the network plans {} ({} {})",
-                      label_of(c->type), e.produced ? "from" : "to", n.name, n.mac, e.length,
-                      e.length == 1 ? "" : "s", expected, label_of(c->type), e.produced ? "input" : "output")));
+          fmt::format("{} I/O frame {} node '{}' (MAC {}) carries {} where the network plans {} ({} {})",
+                      label_of(c->type), e.produced ? "from" : "to", n.name, n.mac, plural(e.length, "byte"), expected,
+                      label_of(c->type), e.produced ? "input" : "output")));
     }
   }
 

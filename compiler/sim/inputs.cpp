@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "diag/plural.hpp"
 #include "emit/header_parts.hpp"
 #include "live/plan.hpp"
 
@@ -116,7 +117,7 @@ std::optional<input_refusal> set_bytes(assembly_instance& a, std::string_view he
   if (nibble >= 0) return input_refusal{diag_id::sim_inputs_hex, "an odd number of hex digits"};
   if (b.size() != a.data.size())
     return input_refusal{diag_id::sim_inputs_hex,
-                         fmt::format("instance {} holds {} bytes, {} given", a.instance, a.data.size(), b.size())};
+                         fmt::format("instance {} holds {}, {} given", a.instance, plural(a.data.size(), "byte"), b.size())};
   a.data = std::move(b);
   a.fixed = true;
   return std::nullopt;

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "diag/plural.hpp"
 #include "emit/header_view.hpp"
 
 namespace edsc::verify {
@@ -188,9 +189,9 @@ class comparer {
     const auto expected = produced ? t.produced_size : t.consumed_size;
     if (got == expected) return;
     add(diag_id::verify_connection_size, x,
-        fmt::format("MAC {} {} {} byte{} on its {} connection where the EDS says {} ({}); the scanner will report "
+        fmt::format("MAC {} {} {} on its {} connection where the EDS says {} ({}); the scanner will report "
                     "a size mismatch",
-                    mac, produced ? "produces" : "consumes", got, got == 1 ? "" : "s", type_names[type], expected,
+                    mac, produced ? "produces" : "consumes", plural(got, "byte"), type_names[type], expected,
                     size_source(type, produced)));
   }
 
@@ -229,8 +230,8 @@ class comparer {
       wrong[key] = {result_.diags.size(), 0};
       result_.diags.push_back(make_diagnostic(
           diag_id::verify_io_length, log_.frames[e.frame].where,
-          fmt::format("{} I/O frame {} MAC {} carries {} byte{} where the EDS says {} ({})", type_names[type],
-                      e.produced ? "from" : "to", mac, e.length, e.length == 1 ? "" : "s", expected,
+          fmt::format("{} I/O frame {} MAC {} carries {} where the EDS says {} ({})", type_names[type],
+                      e.produced ? "from" : "to", mac, plural(e.length, "byte"), expected,
                       size_source(type, e.produced))));
     }
     for (const auto& [key, v] : wrong)

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "diag/plural.hpp"
+
 namespace edsc::verify {
 
 namespace {
@@ -81,7 +83,7 @@ class decoder {
     heard_.insert(d.mac);
     io_event e{i, d.mac, true, conn_type::cos, node.allocated, f.data.size()};
     switch (d.message) {
-      case 0xC: d.label = "G1 msg 12: multicast poll response"; d.meaning = fmt::format("{} bytes", f.data.size()); return;
+      case 0xC: d.label = "G1 msg 12: multicast poll response"; d.meaning = plural(f.data.size(), "byte"); return;
       case 0xD:
         e.type = (node.allocated & choice_cyclic) != 0 ? conn_type::cyclic : conn_type::cos;
         d.label = "G1 msg 13: COS/cyclic data";
@@ -102,7 +104,7 @@ class decoder {
         d.why = "a group 1 message id the predefined set does not use";
         return;
     }
-    d.meaning = fmt::format("{} data byte{}: {}", f.data.size(), f.data.size() == 1 ? "" : "s", hex_bytes(f.data));
+    d.meaning = fmt::format("{}: {}", plural(f.data.size(), "data byte"), hex_bytes(f.data));
     conv_.io.push_back(e);
   }
 
@@ -117,7 +119,7 @@ class decoder {
       case 0:
       case 1:
         d.dir = 'M';
-        d.meaning = fmt::format("master MAC {}, {} bytes", d.mac, f.data.size());
+        d.meaning = fmt::format("master MAC {}, {}", d.mac, plural(f.data.size(), "byte"));
         return;
       case 2: d.dir = 'M'; d.meaning = fmt::format("to MAC {}", d.mac); addressed_.insert(d.mac); return;
       case 3: d.dir = 'S'; heard_.insert(d.mac); answer(i, d, node); return;
@@ -130,8 +132,7 @@ class decoder {
                           : (node.allocated & choice_cyclic) != 0 ? conn_type::cyclic
                                                                   : conn_type::cos;
         conv_.io.push_back({i, d.mac, false, type, node.allocated, f.data.size()});
-        d.meaning = fmt::format("to MAC {}: {} data byte{}: {}", d.mac, f.data.size(), f.data.size() == 1 ? "" : "s",
-                                hex_bytes(f.data));
+        d.meaning = fmt::format("to MAC {}: {}: {}", d.mac, plural(f.data.size(), "data byte"), hex_bytes(f.data));
         return;
       }
       default:

@@ -156,6 +156,20 @@ inline std::vector<std::string> subcommands_in_help(const std::string& help) {
   return out;
 }
 
+// Every section of docs/cli.md titled for the command (`edsc verify ...` and
+// `edsc verify --live ...` are both verify's), joined.
+inline std::string cli_md_section(const std::string& doc, const std::string& path) {
+  std::string out;
+  const std::string title = "\n## `edsc " + path;
+  for (auto at = doc.find(title); at != std::string::npos; at = doc.find(title, at + 1)) {
+    const char next = at + title.size() < doc.size() ? doc[at + title.size()] : '\n';
+    if (next != ' ' && next != '`') continue;  // "edsc net" must not match "edsc netmap"
+    const auto end = doc.find("\n## ", at + 1);
+    out += doc.substr(at, end == std::string::npos ? std::string::npos : end - at);
+  }
+  return out;
+}
+
 inline std::string corpus(const char* name) { return (fs::path(EDSC_CORPUS_DIR) / name).string(); }
 
 // A fresh scratch directory under /tmp per test, removed afterwards.

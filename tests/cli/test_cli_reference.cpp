@@ -55,26 +55,12 @@ std::vector<std::string> options_of(const std::string& path) {
   return out;
 }
 
-// Every section of docs/cli.md titled for the command (`edsc verify ...` and
-// `edsc verify --live ...` are both verify's), joined.
-std::string section_of(const std::string& doc, const std::string& path) {
-  std::string out;
-  const std::string title = "\n## `edsc " + path;
-  for (auto at = doc.find(title); at != std::string::npos; at = doc.find(title, at + 1)) {
-    const char next = at + title.size() < doc.size() ? doc[at + title.size()] : '\n';
-    if (next != ' ' && next != '`') continue;  // "edsc net" must not match "edsc netmap"
-    const auto end = doc.find("\n## ", at + 1);
-    out += doc.substr(at, end == std::string::npos ? std::string::npos : end - at);
-  }
-  return out;
-}
-
 TEST(CliReference, EveryCommandAndOptionOfHelpIsInCliMd) {
   const auto doc = read_bytes(fs::path(EDSC_PROJECT_DIR) / "docs" / "cli.md");
   const auto paths = command_paths();
   ASSERT_GE(paths.size(), 14u);  // the 13 commands, net as two
   for (const auto& path : paths) {
-    const auto section = section_of(doc, path);
+    const auto section = cli_md_section(doc, path);
     if (section.empty()) {
       ADD_FAILURE() << "docs/cli.md has no section '## `edsc " << path << " ...`'";
       continue;

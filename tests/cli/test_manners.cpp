@@ -92,6 +92,31 @@ TEST_F(Cli, SitePluralsAreRight) {
   EXPECT_NE(r.output.find("(0 errors, 0 warnings, 1 identity collision)"), std::string::npos) << r.output;
 }
 
+// A network of one node of one byte: every count of the map in the singular.
+TEST_F(Cli, NetworkPluralsAreRight) {
+  const auto net = file("one.toml", "[network]\nkind = \"devicenet\"\nname = \"one\"\nbaud = 125\ncable = \"thin\"\n"
+                                    "[scanner]\nprofile = \"1769-SDN\"\nmac = 0\nslot = 5\n"
+                                    "[[node]]\nmac = 12\nname = \"panel\"\n"
+                                    "connections = [{ type = \"poll\", input = 1, output = 1 }]\n");
+  auto r = run_edsc({"net", "map", net.string()});
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("; 1 node;"), std::string::npos) << r.output;
+  r = run_edsc({"net", "map", "--format", "svg", net.string()});
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find(": Poll 1 byte 0-0, "), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find(" 1 bytes"), std::string::npos) << r.output;
+  r = run_edsc({"net", "map", "--format", "csv", net.string()});
+  EXPECT_NE(r.output.find(": 1 byte in"), std::string::npos) << r.output;
+}
+
+// Options refused in a list are named without a stray article.
+TEST_F(Cli, RefusedOptionsReadAsAList) {
+  const auto log = file("startup.log", "");
+  const auto r = run_edsc({"verify", "--decode", log.string(), corpus(fanuc), "--mac", "3"});
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_EQ(r.output, "edsc: error: --decode prints a capture's conversation alone; it takes no EDS file, --mac\n");
+}
+
 TEST_F(Cli, NewTakesOutputLikeEveryCommand) {
   const std::vector<std::string> base{"new", "--vendor", "65535", "--product-type", "7", "--product-code", "3",
                                       "--name", "Node", "--date", "01-02-2024"};

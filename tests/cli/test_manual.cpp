@@ -2,6 +2,7 @@
 // definitions (edsc _man, edsc completions): every command has its page,
 // every option of --help is in it, and bash completes what a user types.
 #include "cli/cli_support.hpp"
+#include "test_paths.hpp"
 
 namespace {
 
@@ -42,16 +43,107 @@ TEST_F(Cli, BashCompletesCommandsOptionsChoicesAndFiles) {
   EXPECT_EQ(complete_in(script, work, "edsc check -Werror=io-info-cos"), "-Werror=io-info-cos-cyclic ");
 }
 
+// zsh completes in an interactive shell only: this one runs in a pseudo
+// terminal (zsh/zpty) with the script loaded and prints every match the
+// completion functions add for the line typed, one per line. The terminal
+// echoes what is typed, so the markers are typed split ('<hi''t>') and only
+// the shell's output joins them.
+const char* const zsh_driver = R"zsh(
+zmodload zsh/zpty
+zpty z zsh -f -i
+zpty -w z "PROMPT='' RPROMPT=''; autoload -U compinit && compinit -u -D; source ${(q)1}; compdef _edsc edsc"
+zpty -w z 'compadd () {
+  if [[ ${@[1,(i)(-|--)]} == *-(O|A|D)\ * ]]; then builtin compadd "$@"; return $?; fi
+  typeset -a hits
+  builtin compadd -A hits "$@"
+  local ret=$? h
+  for h in $hits; do print -r -- "<hi""t>$h</hi""t>"; done
+  (( $#hits )) && builtin compadd "$@"
+  return $ret
+}'
+zpty -w z "bindkey '^I' complete-word; print '<rea''dy>'"
+local line
+zpty -r z line '*<ready>*'
+zpty -n -w z "$2"$'\t'
+zpty -w z $'\C-u'"print '<do''ne>'"
+while zpty -r -t z line 2>/dev/null || sleep 0.05; do
+  [[ $line == *'<done>'* ]] && break
+  [[ $line == *'<hit>'* ]] && print -r -- ${${line#*<hit>}%%</hit>*}
+done
+zpty -d z
+)zsh";
+
+// What `shell` completes for `line` (as typed, the last word being
+// completed) with the generated script, run in `cwd`: sorted, space-separated.
+std::string complete_with(const std::string& shell, const fs::path& script, const fs::path& cwd, const std::string& line) {
+  std::string cmd;
+  if (shell == "bash") {
+    // bash's words: the line split at spaces, the last one empty when the line ends in one.
+    std::string words;
+    std::istringstream in(line);
+    for (std::string w; in >> w;) words += "'" + w + "' ";
+    if (line.ends_with(" ")) words += "''";
+    write_bytes(cwd / "driver.sh", "export LC_ALL=C\nsource '" + script.string() + "'\nCOMP_WORDS=(" + words +
+                                       ")\nCOMP_CWORD=$((${#COMP_WORDS[@]} - 1))\n_edsc\n"
+                                       "printf '%s\\n' \"${COMPREPLY[@]}\"\n");
+    cmd = "bash driver.sh";
+  } else if (shell == "zsh") {
+    write_bytes(cwd / "driver.zsh", zsh_driver);
+    cmd = "timeout 30 zsh -f driver.zsh '" + script.string() + "' '" + line + "'";
+  } else {
+    cmd = "fish --no-config -c \"source '" + script.string() + "'; complete -C '" + line + "'\" | cut -f1";
+  }
+  const std::string full = "cd '" + cwd.string() + "' && " + cmd + " | sed 's,/$,,' | LC_ALL=C sort -u | tr '\\n' ' ' > reply.txt";
+  EXPECT_EQ(std::system(full.c_str()), 0) << full;
+  return read_bytes(cwd / "reply.txt");
+}
+
+bool installed(const std::string& shell) { return std::system(("command -v " + shell + " >/dev/null").c_str()) == 0; }
+
+// The three shells CI installs (scripts/packages-test.txt): missing one is a
+// failure, not a skip, so the scripts are always tried where they run.
 TEST_F(Cli, ZshAndFishScriptsParse) {
   for (const auto& [shell, check] : {std::pair<std::string, std::string>{"zsh", "zsh -n"}, {"fish", "fish -n"}}) {
     const auto r = run_edsc({"completions", shell});
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_NE(r.output.find("max-errors"), std::string::npos) << shell;
     const auto p = file("edsc." + shell, r.output);
-    if (std::system(("command -v " + shell + " >/dev/null").c_str()) != 0) continue;  // parsed where installed
+    if (!installed(shell)) {
+      ADD_FAILURE() << shell << " is not installed (scripts/packages-test.txt lists it)";
+      continue;
+    }
     EXPECT_EQ(std::system((check + " '" + p.string() + "'").c_str()), 0) << shell;
   }
   EXPECT_EQ(run_edsc({"completions", "tcsh"}).status, 2);
+}
+
+// After a flag that takes no value the next word is an argument again, and
+// every shell offers what that argument names; a choice of one word is
+// still offered.
+TEST_F(Cli, EveryShellCompletesFilesAfterAFlag) {
+  const auto work = dir_ / "work";
+  fs::create_directories(work / "lib");
+  for (const char* f : {"a.eds", "plant.toml", "spec.json"}) write_bytes(work / f, "");
+  const std::vector<std::pair<std::string, std::string>> lines{
+      {"edsc fmt --check ", "a.eds"},    {"edsc fmt -i ", "a.eds"},        {"edsc edit --in-place ", "a.eds"},
+      {"edsc edit --force ", "a.eds"},   {"edsc fix -q ", "a.eds"},        {"edsc dump --json ", "a.eds"},
+      {"edsc header --stack ", "opener"}, {"edsc net map ", "plant.toml"}, {"edsc new --from ", "spec.json"},
+      {"edsc fmt a.eds --eol ", "crlf"},
+  };
+  for (const std::string shell : {"bash", "zsh", "fish"}) {
+    if (!installed(shell)) {
+      ADD_FAILURE() << shell << " is not installed (scripts/packages-test.txt lists it)";
+      continue;
+    }
+    const auto r = run_edsc({"completions", shell});
+    ASSERT_EQ(r.status, 0) << r.output;
+    const auto script = file("edsc." + shell, r.output);
+    for (const auto& [line, offered] : lines) {
+      const auto got = complete_with(shell, script, work, line);
+      EXPECT_NE((" " + got).find(" " + offered + " "), std::string::npos) << shell << ": '" << line << "' offers '"
+                                                                          << got << "'";
+    }
+  }
 }
 
 TEST_F(Cli, EveryCommandHasAManPageListingItsOptions) {
@@ -81,6 +173,71 @@ TEST_F(Cli, EveryCommandHasAManPageListingItsOptions) {
     ::pclose(p);
     EXPECT_EQ(warnings, "") << e.path();
   }
+}
+
+// A path as roff writes it ('-' is "\-").
+std::string roff_path(std::string s) {
+  for (std::string::size_type at = 0; (at = s.find('-', at)) != std::string::npos; at += 2) s.replace(at, 1, "\\-");
+  return s;
+}
+
+TEST_F(Cli, ManPagesPointAtTheRightPagesAndTheInstalledFiles) {
+  const auto man = dir_ / "man";
+  ASSERT_EQ(run_edsc({"_man", man.string()}).status, 0);
+  const auto top = read_bytes(man / "edsc.1");
+  // net has a page of its own, listing check and map.
+  EXPECT_NE(top.find("\\fBnet\\fR\nCheck a DeviceNet network file and lay out its scanner's images (docs/network.md). "
+                     "See \\fBedsc\\-net\\fR(1).\n"),
+            std::string::npos)
+      << top;
+  EXPECT_NE(read_bytes(man / "edsc-net.1").find("See \\fBedsc\\-net\\-map\\fR(1)."), std::string::npos);
+  // The name once.
+  EXPECT_NE(top.find(".SH NAME\nedsc \\- a compiler for ODVA CIP Electronic Data Sheets (EDS)\n"), std::string::npos)
+      << top.substr(0, 300);
+  // NO_COLOR as it behaves: a colour asked for on the command line wins.
+  EXPECT_NE(top.find("NO_COLOR\nSet to anything but the empty string, text is not coloured unless \\-\\-color always "
+                     "asks for it.\n"),
+            std::string::npos);
+  // FILES names where `cmake --install` puts them for this build's prefix,
+  // and no page names the source or build tree.
+  const auto build_dir = fs::path(EDSC_BINARY).parent_path().parent_path();
+  for (const auto& e : fs::directory_iterator(man)) {
+    const auto text = read_bytes(e.path());
+    EXPECT_NE(text.find(".SH FILES\n.TP\n" + roff_path(std::string(EDSC_INSTALL_DOCDIR)) + "/\nThe user documentation.\n"),
+              std::string::npos)
+        << e.path();
+    EXPECT_EQ(text.find(roff_path(EDSC_PROJECT_DIR)), std::string::npos) << e.path();
+    EXPECT_EQ(text.find(roff_path(build_dir.string())), std::string::npos) << e.path();
+  }
+  EXPECT_NE(read_bytes(man / "edsc-header.1").find(roff_path(std::string(EDSC_INSTALL_DATADIR) + "/edsc/templates/")),
+            std::string::npos);
+}
+
+// Runs `edsc args` on a terminal (script(1) gives it a pseudo terminal), with
+// NO_COLOR as given (unset when null); the output.
+std::string on_a_terminal(const std::string& args, const char* no_color) {
+  std::string env = no_color == nullptr ? "-u NO_COLOR" : "NO_COLOR='" + std::string(no_color) + "'";
+  env += " TERM=xterm";
+  const auto cmd = "env " + env + " script -qec \"'" + std::string(EDSC_BINARY) + "' " + args + "\" /dev/null";
+  std::string out;
+  std::FILE* p = ::popen(cmd.c_str(), "r");
+  char buf[4096];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
+  ::pclose(p);
+  return out;
+}
+
+// no-color.org: NO_COLOR present and not empty turns colour off where edsc
+// would colour by itself; --color always still colours.
+TEST_F(Cli, NoColorAsDocumented) {
+  const auto bad = file("bad.eds", "[Device]\nVendCode = ;\n").string();
+  const auto check = "check '" + bad + "'";
+  const std::string escape = "\x1b[";
+  ASSERT_NE(on_a_terminal(check, nullptr).find(escape), std::string::npos) << "no colour on a terminal at all";
+  EXPECT_EQ(on_a_terminal(check, "1").find(escape), std::string::npos);
+  EXPECT_NE(on_a_terminal(check, "").find(escape), std::string::npos) << "an empty NO_COLOR is no request";
+  EXPECT_NE(on_a_terminal("check --color always '" + bad + "'", "1").find(escape), std::string::npos);
+  EXPECT_EQ(on_a_terminal("check --color never '" + bad + "'", nullptr).find(escape), std::string::npos);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // Hover text for each kind of thing under the cursor: the range it covers
 // and the facts it must state (worked out from the sample by hand).
+#include "lsp/describe.hpp"
 #include "lsp_support.hpp"
 #include "test_paths.hpp"
 
@@ -133,6 +134,16 @@ TEST(LspHoverFiles, ProjectExample) {
   ASSERT_TRUE(h);
   EXPECT_HAS(h->markdown, "- class 4 (0x4)\n- instance 1 (0x1)\n- attribute 3 (0x3)\n");
   EXPECT_HAS(lsp::hover(*a, offset_of(*a, "0x0006", 1))->markdown, "- bit-strobe (bit 1)\n- change of state (bit 2)\n");
+}
+
+// Sizes in words a reader checks: one byte and one bit in the singular.
+TEST(LspSizes, CountsAgreeWithTheirWords) {
+  EXPECT_EQ(lsp::bytes_and_bits(1), "1 byte (8 bits)");
+  EXPECT_EQ(lsp::bytes_and_bits(2), "2 bytes (16 bits)");
+  EXPECT_EQ(lsp::bits_and_bytes(8), "8 bits (1 byte)");
+  EXPECT_EQ(lsp::bits_and_bytes(9), "9 bits (1 byte and 1 bit)");
+  EXPECT_EQ(lsp::bits_and_bytes(1), "1 bit");
+  EXPECT_EQ(lsp::bits_and_bytes(17), "17 bits (2 bytes and 1 bit)");
 }
 
 }  // namespace

@@ -113,7 +113,7 @@ TEST_F(Net, SvgPlacesEachNodeWhereItsBytesAre) {
   const box want[] = {{2, 0, 3, "I"}, {8, 4, 1, "I"}, {9, 8, 3, "I"}, {10, 12, 1, "I"}, {12, 16, 12, "I"},
                       {12, 0, 8, "O"}};
   static const std::regex node(
-      R"re(<rect x="(\d+)" y="(\d+)" width="(\d+)" height="26" fill="[^"]+" class="node"><title>MAC (\d+) \w+: \w+ (\d+) bytes (\d+)-(\d+), Local:5:(I|O)\.)re");
+      R"re(<rect x="(\d+)" y="(\d+)" width="(\d+)" height="26" fill="[^"]+" class="node"><title>MAC (\d+) \w+: \w+ (\d+) bytes? (\d+)-(\d+), Local:5:(I|O)\.)re");
   std::vector<box> got;
   std::map<std::string, std::set<int>> rows;  // image -> the y of its boxes
   for (auto it = std::sregex_iterator(r.output.begin(), r.output.end(), node); it != std::sregex_iterator(); ++it) {

@@ -1,7 +1,10 @@
 // The output policy (io/output_target.hpp, docs/cli.md "Output files") for
-// every command that writes, against every kind of target: a table of
-// command x target kind, each cell run as a user would. Nothing but the named
-// output may change, and a non-regular file is never replaced by a regular one.
+// every writer against every kind of target: a table of writer x target
+// kind, each cell run as a user would. The writers are every option the
+// command line model (`edsc _model`) says names a file edsc writes, so a
+// writer added later is in the table without anyone adding it; one the test
+// cannot drive is a failure, not a gap. Nothing but the named output may
+// change, and a non-regular file is never replaced by a regular one.
 #include <sys/socket.h>
 #include <sys/sysmacros.h>
 #include <sys/un.h>
@@ -12,7 +15,9 @@
 #include <map>
 #include <thread>
 
+#include "cli/cli_model_support.hpp"
 #include "reliability/reliability_support.hpp"
+#include "reliability/sim_device.hpp"
 #include "test_paths.hpp"
 
 namespace edsc::reliability_test {
@@ -30,53 +35,96 @@ const std::string device_json =
     R"({"vendor": 65535, "product_type": 7, "product_code": 9, "name": "Policy Node", "network": "devicenet",
         "input_bytes": 1, "date": "01-02-2024"})";
 
-struct command {
-  std::string name;
+fs::path eds_in(const fs::path& d) { return d / "in" / "dev.eds"; }
+fs::path network_in(const fs::path& d) { return d / "in" / "networks" / "thesis.toml"; }
+
+// What the test gives an argument of each kind the model names, and the files
+// that argument makes the command read (a network reads its nodes' EDS files).
+struct argument {
+  std::string value;
+  std::vector<fs::path> reads;
+};
+std::optional<argument> argument_of(const std::string& kind, const fs::path& d, const std::string& device) {
+  if (kind == "eds") return argument{eds_in(d).string(), {eds_in(d)}};
+  if (kind == "json") return argument{(d / "in" / "device.json").string(), {d / "in" / "device.json"}};
+  if (kind == "toml")
+    return argument{network_in(d).string(),
+                    {network_in(d), d / "in" / "nodes" / "level.eds", d / "in" / "rightsight-42ef-3byte.eds"}};
+  if (kind == "host") return argument{device, {}};
+  return std::nullopt;
+}
+
+// What a command needs to write beyond its required arguments: `new` takes
+// its device from --from or from four options the parser does not require.
+const std::map<std::string, std::vector<std::string>> extra_options{{"new", {"--from", "json"}}};
+
+struct writer {
+  std::string name;  // "probe --upload-eds"
   // The arguments that write to `target`, given the scratch folder.
   std::function<std::vector<std::string>(const fs::path& dir, const std::string& target)> args;
   // The inputs it reads: an output naming one of them must be refused.
   std::function<std::vector<fs::path>(const fs::path& dir)> inputs;
 };
 
-fs::path eds_in(const fs::path& d) { return d / "in" / "dev.eds"; }
-
-std::vector<command> commands() {
-  auto eds_only = [](const fs::path& d) { return std::vector<fs::path>{eds_in(d)}; };
-  return {
-      {"fmt", [](const fs::path& d, const std::string& t) { return std::vector<std::string>{"fmt", eds_in(d), "-o", t}; },
-       eds_only},
-      {"fix", [](const fs::path& d, const std::string& t) { return std::vector<std::string>{"fix", eds_in(d), "-o", t}; },
-       eds_only},
-      {"edit",
-       [](const fs::path& d, const std::string& t) {
-         return std::vector<std::string>{"edit", eds_in(d), "--set", "Device.MajRev=2", "-o", t};
-       },
-       eds_only},
-      {"header",
-       [](const fs::path& d, const std::string& t) { return std::vector<std::string>{"header", eds_in(d), "-o", t}; },
-       eds_only},
-      {"doc", [](const fs::path& d, const std::string& t) { return std::vector<std::string>{"doc", eds_in(d), "-o", t}; },
-       eds_only},
-      {"new",
-       [](const fs::path& d, const std::string& t) {
-         return std::vector<std::string>{"new", "--from", d / "in" / "device.json", "-o", t};
-       },
-       [](const fs::path& d) { return std::vector<fs::path>{d / "in" / "device.json"}; }},
-      {"net map",
-       [](const fs::path& d, const std::string& t) {
-         return std::vector<std::string>{"net", "map", d / "in" / "networks" / "thesis.toml", "-o", t};
-       },
-       [](const fs::path& d) {
-         return std::vector<fs::path>{d / "in" / "networks" / "thesis.toml", d / "in" / "nodes" / "level.eds",
-                                      d / "in" / "rightsight-42ef-3byte.eds"};
-       }},
-  };
+// Every writer of the model, with the arguments to run it: the required ones
+// (and extra_options), each given by its kind, then the output. A writer whose
+// arguments the test cannot give is a failure naming it.
+std::vector<writer> writers(const std::string& device) {
+  std::vector<writer> out;
+  each_command(cli_model(), [&](const nlohmann::json& c) {
+    const auto path = c.at("path").get<std::string>();
+    for (const auto& o : c.at("options")) {
+      if (o.at("kind") != "output") continue;
+      const model_option target_option{path, o};
+      // (option spelling, kind) of everything else the command needs.
+      std::vector<std::pair<std::string, std::string>> needs;
+      for (const auto& other : c.at("options")) {
+        if (other == o || !other.at("required").get<bool>()) continue;
+        const model_option m{path, other};
+        needs.emplace_back(m.positional() ? "" : m.spelling(), m.kind());
+      }
+      if (const auto it = extra_options.find(path); it != extra_options.end())
+        for (std::size_t i = 0; i + 1 < it->second.size(); i += 2) needs.emplace_back(it->second[i], it->second[i + 1]);
+      bool drivable = true;
+      for (const auto& [spelling, kind] : needs)
+        if (!argument_of(kind, "/", device)) {
+          ADD_FAILURE() << "edsc " << path << " " << target_option.spelling() << " writes a file, but the test cannot "
+                        << "give its argument " << spelling << " of kind '" << kind
+                        << "': teach argument_of (or extra_options) how to run it";
+          drivable = false;
+        }
+      if (!drivable) continue;
+      writer w;
+      w.name = path + " " + target_option.spelling();
+      w.args = [=](const fs::path& d, const std::string& target) {
+        auto args = words_of(path);
+        for (const auto& [spelling, kind] : needs) {
+          if (!spelling.empty()) args.push_back(spelling);
+          args.push_back(argument_of(kind, d, device)->value);
+        }
+        args.push_back(target_option.spelling());
+        args.push_back(target);
+        return args;
+      };
+      w.inputs = [=](const fs::path& d) {
+        std::vector<fs::path> reads;
+        for (const auto& [spelling, kind] : needs) {
+          const auto a = argument_of(kind, d, device);
+          reads.insert(reads.end(), a->reads.begin(), a->reads.end());
+        }
+        return reads;
+      };
+      out.push_back(std::move(w));
+    }
+  });
+  return out;
 }
 
 class OutputPolicy : public Cli {
  protected:
   void SetUp() override {
     Cli::SetUp();
+    writers_ = writers(device_.address());
     file("in/dev.eds", input_eds());
     file("in/device.json", device_json);
     const fs::path eds = fs::path(EDSC_PROJECT_DIR) / "eds";
@@ -87,7 +135,7 @@ class OutputPolicy : public Cli {
   }
 
   // Every input's bytes, to show none of them changed.
-  std::map<fs::path, std::string> snapshot(const command& c) {
+  std::map<fs::path, std::string> snapshot(const writer& c) {
     std::map<fs::path, std::string> out;
     for (const auto& p : c.inputs(dir_)) out[p] = read_bytes(p);
     return out;
@@ -95,7 +143,7 @@ class OutputPolicy : public Cli {
 
   // The bytes a command writes to a plain new file named `out` in a folder of
   // its own (file names reach some outputs, such as a header's guard).
-  std::string reference(const command& c) {
+  std::string reference(const writer& c) {
     const auto d = dir_ / ("ref-" + std::to_string(counter_++));
     fs::create_directory(d);
     const auto r = run_edsc(c.args(dir_, (d / "out").string()), time_limit);
@@ -109,11 +157,23 @@ class OutputPolicy : public Cli {
     return d;
   }
 
+  // The device probe --upload-eds uploads from: it serves the input EDS.
+  sim_device device_{input_eds()};
+  std::vector<writer> writers_;
   int counter_ = 0;
 };
 
+// The model is read, and holds every writer known when this test was written.
+TEST_F(OutputPolicy, EveryWriterOfTheModelIsInTheTable) {
+  std::vector<std::string> names;
+  for (const auto& w : writers_) names.push_back(w.name);
+  for (const char* known : {"fmt --output", "fix --output", "edit --output", "header --output", "doc --output",
+                            "new --output", "net map --output", "probe --upload-eds"})
+    EXPECT_NE(std::find(names.begin(), names.end(), known), names.end()) << known;
+}
+
 TEST_F(OutputPolicy, RegularTargetsAreWrittenAtomically) {
-  for (const auto& c : commands()) {
+  for (const auto& c : writers_) {
     const auto want = reference(c);
     ASSERT_FALSE(want.empty()) << c.name;
     // An existing file that is not an input is replaced whole.
@@ -127,7 +187,7 @@ TEST_F(OutputPolicy, RegularTargetsAreWrittenAtomically) {
 }
 
 TEST_F(OutputPolicy, TheInputIsRefusedHoweverItIsNamed) {
-  for (const auto& c : commands()) {
+  for (const auto& c : writers_) {
     const auto before = snapshot(c);
     for (const auto& in : c.inputs(dir_)) {
       const auto d = fresh_dir();
@@ -149,7 +209,7 @@ TEST_F(OutputPolicy, TheInputIsRefusedHoweverItIsNamed) {
 }
 
 TEST_F(OutputPolicy, MissingFolderAndDirectoryAreRefused) {
-  for (const auto& c : commands()) {
+  for (const auto& c : writers_) {
     const auto d = fresh_dir();
     auto r = run_edsc(c.args(dir_, (d / "nowhere" / "out").string()), time_limit);
     EXPECT_EQ(r.status, 2) << c.name << "\n" << r.output;
@@ -164,7 +224,7 @@ TEST_F(OutputPolicy, MissingFolderAndDirectoryAreRefused) {
 }
 
 TEST_F(OutputPolicy, DashIsStandardOutputEverywhere) {
-  for (const auto& c : commands()) {
+  for (const auto& c : writers_) {
     const auto d = fresh_dir();
     const auto r = run_edsc(c.args(dir_, "-"), time_limit);
     EXPECT_EQ(r.status, 0) << c.name << "\n" << r.output;
@@ -175,7 +235,7 @@ TEST_F(OutputPolicy, DashIsStandardOutputEverywhere) {
 }
 
 TEST_F(OutputPolicy, AFifoIsWrittenThroughAndStaysAFifo) {
-  for (const auto& c : commands()) {
+  for (const auto& c : writers_) {
     const auto want = reference(c);
     const auto d = fresh_dir();
     ASSERT_EQ(::mkfifo((d / "out").c_str(), 0600), 0);
@@ -206,7 +266,7 @@ TEST_F(OutputPolicy, AFifoIsWrittenThroughAndStaysAFifo) {
 }
 
 TEST_F(OutputPolicy, ASymlinkIsWrittenThroughAndStaysALink) {
-  for (const auto& c : commands()) {
+  for (const auto& c : writers_) {
     const auto want = reference(c);
     const auto d = fresh_dir();
     fs::create_directory(d / "real");
@@ -223,7 +283,7 @@ TEST_F(OutputPolicy, ASymlinkIsWrittenThroughAndStaysALink) {
 }
 
 TEST_F(OutputPolicy, ADanglingSymlinkAndASocketAreRefused) {
-  for (const auto& c : commands()) {
+  for (const auto& c : writers_) {
     const auto d = fresh_dir();
     fs::create_symlink(d / "nothing", d / "out");
     auto r = run_edsc(c.args(dir_, (d / "out").string()), time_limit);
@@ -258,7 +318,7 @@ TEST_F(OutputPolicy, DevicesAreWrittenThroughOrRefusedNeverReplaced) {
   // refused before it is opened, whatever it would be.
   const auto blk = dir_ / "blk";
   ASSERT_EQ(::mknod(blk.c_str(), S_IFBLK | 0600, ::makedev(7, 250)), 0) << std::strerror(errno);
-  for (const auto& c : commands()) {
+  for (const auto& c : writers_) {
     auto r = run_edsc(c.args(dir_, null_dev.string()), time_limit);
     EXPECT_EQ(r.status, 0) << c.name << "\n" << r.output;
     EXPECT_TRUE(fs::is_character_file(fs::symlink_status(null_dev))) << c.name;
@@ -296,6 +356,38 @@ TEST_F(OutputPolicy, StreamNamesWriteToTheOpenDescriptor) {
   const auto r = run_edsc({"header", eds_in(dir_).string(), "-o", "/dev/stdout"}, time_limit);
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("#define EDS_VENDOR_ID"), std::string::npos) << r.output;
+}
+
+// The raw atomic write is internal to compiler/io (output_target.cpp): no
+// other source of the compiler opens a file for writing, renames or copies
+// one; every writer goes through io::write_output and its policy.
+TEST(OutputPolicySources, NothingOutsideIoWritesAFileItself) {
+  const std::vector<std::string> raw{"ofstream",  "std::fstream", "fopen(",       "O_WRONLY",      "O_RDWR",
+                                     "O_CREAT",   "O_TRUNC",      "creat(",       "mkstemp",       "::rename(",
+                                     "std::rename(", "fs::rename(", "filesystem::rename(", "copy_file", "fs::copy(",
+                                     "filesystem::copy(", "write_atomically", "write_fully", "io/write_file.hpp"};
+  const auto compiler = fs::path(EDSC_PROJECT_DIR) / "compiler";
+  std::size_t files = 0;
+  for (const auto& e : fs::recursive_directory_iterator(compiler)) {
+    const auto rel = fs::relative(e.path(), compiler).string();
+    if (!e.is_regular_file() || rel.starts_with("deps/")) continue;
+    if (e.path().extension() != ".cpp" && e.path().extension() != ".hpp") continue;
+    ++files;
+    const bool io = rel.starts_with("io/");
+    std::istringstream lines(read_bytes(e.path()));
+    int n = 0;
+    for (std::string line; std::getline(lines, line);) {
+      ++n;
+      for (const auto& r : raw) {
+        // Inside io, only its own implementation may name the raw write.
+        if (io && e.path().extension() == ".cpp") continue;
+        if (line.find(r) != std::string::npos)
+          ADD_FAILURE() << "compiler/" << rel << ":" << n << " uses " << r
+                        << "; write through io::write_output (io/output_target.hpp)\n  " << line;
+      }
+    }
+  }
+  EXPECT_GE(files, 100u);
 }
 
 }  // namespace

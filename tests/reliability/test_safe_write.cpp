@@ -1,5 +1,5 @@
 // --in-place and -o write through a temporary file in the target directory,
-// fsync and rename (io/write_file.cpp): on any failure the original stays as
+// fsync and rename (io/output_target.cpp): on any failure the original stays as
 // it was and no temporary file is left behind.
 #include "reliability/reliability_support.hpp"
 

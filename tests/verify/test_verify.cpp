@@ -78,7 +78,7 @@ TEST(Verify, DecodeRefusesOptionsItWouldIgnore) {
   }
   const auto eds = run_shell(edsc_command() + " verify " + quoted(diffuse) + " --decode " + quoted(startup));
   EXPECT_EQ(eds.status, 2) << eds.output;
-  EXPECT_NE(eds.output.find("an EDS file"), std::string::npos) << eds.output;
+  EXPECT_NE(eds.output.find("it takes no EDS file"), std::string::npos) << eds.output;
   EXPECT_EQ(run_shell(edsc_command() + " verify --decode " + quoted(startup)).status, 0);
 }
 
