@@ -15,6 +15,7 @@
 #include "diag/render_text.hpp"
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
+#include "io/read_file.hpp"
 #include "sim/inputs.hpp"
 #include "sim/server.hpp"
 
@@ -45,12 +46,17 @@ std::uint32_t offset_of(std::string_view text, std::uint32_t line, std::uint32_t
 // --inputs FILE (JSON or TOML, sim/inputs.hpp); a diagnostic with its rule
 // (sim-inputs-*) at the mistake when it does not fit the EDS.
 bool load_inputs(const std::string& path, sim::state& s) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    print_error(fmt::format("--inputs {}: cannot read the file", path));
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    print_error(fmt::format("--inputs {}: is a directory, not a file of inputs", path));
     return false;
   }
-  const source_file src(path, std::string{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()});
+  auto read = io::read_source(path);
+  if (auto* err = std::get_if<io::io_error>(&read)) {
+    print_error("--inputs " + err->message);
+    return false;
+  }
+  const auto& src = *std::get<std::unique_ptr<source_file>>(read);
   const auto e = sim::load_inputs(s.dev, path, src.text());
   if (!e) return true;
   const auto at = e->line > 0 ? offset_of(src.text(), e->line, e->column) : 0;
