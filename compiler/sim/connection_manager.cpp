@@ -90,9 +90,9 @@ std::optional<refusal> check_point(const state& s, const connection_point& p, co
     if (fo.to.variable ? fo.to.size > want_to : fo.to.size != want_to) return refusal{ext::to_size, want_to};
   }
   (void)want;
-  const auto in_range = [&](std::uint32_t rpi) { return rpi >= p.rpi_min_us && rpi <= p.rpi_max_us; };
-  if ((fo.ot.type != cip::conn_type::null && !in_range(fo.ot_rpi_us)) ||
-      (fo.to.type != cip::conn_type::null && !in_range(fo.to_rpi_us)))
+  const auto within = [](const rpi_limits& r, std::uint32_t rpi) { return rpi >= r.min_us && rpi <= r.max_us; };
+  if ((fo.ot.type != cip::conn_type::null && !within(p.ot_rpi, fo.ot_rpi_us)) ||
+      (fo.to.type != cip::conn_type::null && !within(p.to_rpi, fo.to_rpi_us)))
     return refusal{ext::rpi, {}};
   if (config) {
     const auto want_cfg = p.plan.facts.config_size;

@@ -96,6 +96,19 @@ bool read_control(state& s, int fd, std::string& pending, const std::function<vo
 
 }  // namespace
 
+std::string listening_line(const state& s, const std::string& address, std::uint16_t port, std::uint16_t io_port) {
+  auto line = fmt::format("{{\"event\":\"listening\",\"address\":\"{}\",\"port\":{},\"io_port\":{},"
+                          "\"connection_points\":{},\"assemblies\":{}",
+                          address, port, io_port, s.dev.points.size(), s.dev.assemblies.size());
+  std::string unset;
+  for (const auto& p : s.dev.points)
+    if (p.ot_rpi.unset || p.to_rpi.unset) unset += fmt::format("{}{}", unset.empty() ? "" : ",", p.number);
+  if (!unset.empty())
+    line += fmt::format(",\"default_rpi\":{{\"connections\":[{}],\"min_us\":{},\"max_us\":{}}}", unset,
+                        default_rpi_min_us, default_rpi_max_us);
+  return line + "}";
+}
+
 std::string serve(state& s, const server_options& opt, const std::atomic<bool>& stop,
                   const std::function<void(const std::string&)>& emit) {
   sockaddr_in at{};
@@ -111,9 +124,7 @@ std::string serve(state& s, const server_options& opt, const std::atomic<bool>& 
   io_at.sin_port = htons(opt.io_port);
   auto io = open_socket(SOCK_DGRAM, io_at);
   if (!io.valid()) return bind_error("UDP (class 1 I/O)", opt.address, opt.io_port);
-  emit(fmt::format("{{\"event\":\"listening\",\"address\":\"{}\",\"port\":{},\"io_port\":{},\"connection_points\":{},"
-                   "\"assemblies\":{}}}",
-                   opt.address, opt.port, opt.io_port, s.dev.points.size(), s.dev.assemblies.size()));
+  emit(listening_line(s, opt.address, opt.port, opt.io_port));
 
   std::vector<client> clients;
   std::uint64_t produced = 0;
