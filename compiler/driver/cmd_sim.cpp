@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "check/check_file.hpp"
+#include "diag/plural.hpp"
 #include "diag/render_text.hpp"
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
@@ -68,6 +69,26 @@ bool load_inputs(const std::string& path, sim::state& s) {
   return false;
 }
 
+// An EDS the simulator can open no I/O connection of (a DeviceNet file, a
+// backplane module): served, but the user hears what a scanner will find.
+void warn_without_connections(const std::string& file, const model::device& dev, const sim::device& d) {
+  if (!d.points.empty()) return;
+  const auto nets = dev.classes.networks;
+  const auto why = (nets & model::net_ethernetip) == 0 && (nets & model::net_devicenet) != 0
+                       ? std::string("a DeviceNet EDS")
+                   : dev.connections.empty()       ? std::string("it has no ConnectionN")
+                   : dev.connections.size() == 1 ? std::string("its one ConnectionN cannot be served")
+                                                 : fmt::format("none of its {} ConnectionN can be served", dev.connections.size());
+  std::string found = "its identity";
+  if (!d.assemblies.empty()) found += ", " + plural(d.assemblies.size(), "assembly instance");
+  if (!d.params.empty()) found += ", " + plural(d.params.size(), "parameter");
+  std::fprintf(stderr,
+               "edsc: warning: %s describes no EtherNet/IP connection (%s): a scanner finds the device and reads %s "
+               "and the EDS by explicit messages, but can open no I/O connection (every Forward_Open of class 1 is "
+               "refused)\n",
+               file.c_str(), why.c_str(), found.c_str());
+}
+
 int run_sim(const sim_cli& cli) {
   auto source = read_or_report(cli.eds);
   if (!source) return exit_failure;
@@ -85,6 +106,7 @@ int run_sim(const sim_cli& cli) {
   if (!cli.inputs.empty() && !load_inputs(cli.inputs, s)) return exit_failure;
   for (const auto& u : s.dev.skipped)
     std::fprintf(stderr, "edsc: note: Connection%u not served: %s\n", u.number, u.why.c_str());
+  warn_without_connections(cli.eds, checked->dev, s.dev);
   struct sigaction sa {};
   sa.sa_handler = on_stop_signal;
   ::sigaction(SIGINT, &sa, nullptr);
