@@ -90,6 +90,12 @@ void warn_without_connections(const std::string& file, const model::device& dev,
 }
 
 int run_sim(const sim_cli& cli) {
+  if (cli.port == sim::server_options{}.io_port) {
+    print_error(fmt::format("--port {}: that is the class 1 I/O port (UDP {}); the encapsulation port must be another "
+                            "(the default is 44818)",
+                            cli.port, cli.port));
+    return exit_failure;
+  }
   auto source = read_or_report(cli.eds);
   if (!source) return exit_failure;
   auto checked = analyze(std::move(source), check_options{});
@@ -137,7 +143,9 @@ void register_sim(CLI::App& app, command_action& run) {
   cmd->add_option("file", cli->eds, "The EDS file the device is built from")->required();
   cmd->add_option("--address", cli->address, "IPv4 address to listen on (default 0.0.0.0: every interface)")
       ->type_name("ADDR");
-  cmd->add_option("--port", cli->port, "Encapsulation port, TCP and UDP (default 44818); class 1 I/O stays on UDP 2222")
+  cmd->add_option("--port", cli->port,
+                  "Encapsulation port, TCP and UDP (default 44818; 0: one the system picks, reported when listening); "
+                  "class 1 I/O stays on UDP 2222, which --port may not take")
       ->type_name("PORT");
   cmd->add_option("--serial", cli->serial, "Serial number the Identity object reports (default 1)")->type_name("N");
   cmd->add_option("--inputs", cli->inputs,

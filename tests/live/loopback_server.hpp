@@ -3,7 +3,9 @@
 // badly, so edsc's handling of every reply can be tested without one. It
 // serves one client at a time and stops when destroyed.
 #include <arpa/inet.h>
+#include <fcntl.h>
 #include <netinet/in.h>
+#include <sys/file.h>
 #include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
@@ -45,9 +47,14 @@ inline cip::bytes reply_to(const cip::bytes& req, std::uint16_t command, std::ui
 
 inline void send_bytes(int s, const cip::bytes& b) { (void)::send(s, b.data(), b.size(), MSG_NOSIGNAL); }
 
+// verify --live --connections against a stand-in binds UDP 2222 on
+// 127.0.0.1, and edsc refuses a port in use rather than share it: the tests
+// that play a device on loopback take turns, across test processes too.
 class loopback_server {
  public:
   explicit loopback_server(behaviour b) : b_(std::move(b)) {
+    turn_ = ::open("/tmp/edsc-live-loopback.lock", O_CREAT | O_RDWR | O_CLOEXEC, 0600);
+    if (turn_ >= 0) ::flock(turn_, LOCK_EX);
     listen_ = ::socket(AF_INET, SOCK_STREAM, 0);
     sockaddr_in a{};
     a.sin_family = AF_INET;
@@ -63,6 +70,7 @@ class loopback_server {
     stop_ = true;
     thread_.join();
     ::close(listen_);
+    if (turn_ >= 0) ::close(turn_);
   }
   [[nodiscard]] std::string address() const { return "127.0.0.1:" + std::to_string(port_); }
 
@@ -78,6 +86,7 @@ class loopback_server {
     }
   }
   behaviour b_;
+  int turn_ = -1;  // the lock held while this stand-in lives
   int listen_ = -1;
   std::uint16_t port_ = 0;
   std::atomic<bool> stop_{false};
