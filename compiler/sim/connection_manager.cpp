@@ -41,7 +41,12 @@ std::string triple(const cip::forward_open_request& fo) {
 bytes forward_open(state& s, const link& l, const cip::request& q, clock::time_point now) {
   const bool large = q.service == cip::service::large_forward_open;
   auto parsed = cip::decode_forward_open(q.data, large, 0);
-  if (!parsed) return cip::encode_reply(q.service, general::not_enough_data);
+  if (!parsed) {
+    log_event(s, "refused",
+              fmt::format("\"status\":\"0x{:02X}\",\"why\":{}", general::not_enough_data,
+                          nlohmann::json("the Forward_Open cannot be read: " + parsed.error().what).dump()));
+    return cip::encode_reply(q.service, general::not_enough_data);
+  }
   const auto& fo = parsed.value();
   for (const auto& o : s.connections)
     if (o.serial == fo.connection_serial && o.vendor == fo.originator_vendor &&

@@ -146,6 +146,13 @@ TEST_F(sim_status, every_refused_forward_open_is_logged_with_why) {
   ASSERT_EQ(s_.log.size(), 1u);
   EXPECT_NE(s_.log[0].find("\"extended\":\"0x0114\""), std::string::npos) << s_.log[0];
   EXPECT_NE(s_.log[0].find("product code 65002"), std::string::npos) << s_.log[0];
+  // A Forward_Open too short to read: 0x13, and a line saying so.
+  s_.log.clear();
+  EXPECT_EQ(ask(cip::encode_request(0x54, cip::logical_path(6, 1), unhex("0A 0E 00"))).general, 0x13);
+  ASSERT_EQ(s_.log.size(), 1u);
+  EXPECT_NE(s_.log[0].find("{\"event\":\"refused\",\"status\":\"0x13\",\"why\":\"the Forward_Open cannot be read: "),
+            std::string::npos)
+      << s_.log[0];
 }
 
 // Configuration data of the wrong length: 0x0126 (invalid configuration
