@@ -12,10 +12,12 @@
 #include <fmt/format.h>
 
 #include "check/check_file.hpp"
+#include "diag/plural.hpp"
 #include "diag/render_text.hpp"
 #include "driver/commands.hpp"
 #include "driver/emitter_input.hpp"
 #include "driver/output.hpp"
+#include "io/read_file.hpp"
 #include "sim/inputs.hpp"
 #include "sim/server.hpp"
 
@@ -46,12 +48,17 @@ std::uint32_t offset_of(std::string_view text, std::uint32_t line, std::uint32_t
 // --inputs FILE (JSON or TOML, sim/inputs.hpp); a diagnostic with its rule
 // (sim-inputs-*) at the mistake when it does not fit the EDS.
 bool load_inputs(const std::string& path, sim::state& s) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    print_error(fmt::format("--inputs {}: cannot read the file", path));
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    print_error(fmt::format("--inputs {}: is a directory, not a file of inputs", path));
     return false;
   }
-  const source_file src(path, std::string{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()});
+  auto read = io::read_source(path);
+  if (auto* err = std::get_if<io::io_error>(&read)) {
+    print_error("--inputs " + err->message);
+    return false;
+  }
+  const auto& src = *std::get<std::unique_ptr<source_file>>(read);
   const auto e = sim::load_inputs(s.dev, path, src.text());
   if (!e) return true;
   const auto at = e->line > 0 ? offset_of(src.text(), e->line, e->column) : 0;
@@ -63,7 +70,33 @@ bool load_inputs(const std::string& path, sim::state& s) {
   return false;
 }
 
+// An EDS the simulator can open no I/O connection of (a DeviceNet file, a
+// backplane module): served, but the user hears what a scanner will find.
+void warn_without_connections(const std::string& file, const model::device& dev, const sim::device& d) {
+  if (!d.points.empty()) return;
+  const auto nets = dev.classes.networks;
+  const auto why = (nets & model::net_ethernetip) == 0 && (nets & model::net_devicenet) != 0
+                       ? std::string("a DeviceNet EDS")
+                   : dev.connections.empty()       ? std::string("it has no ConnectionN")
+                   : dev.connections.size() == 1 ? std::string("its one ConnectionN cannot be served")
+                                                 : fmt::format("none of its {} ConnectionN can be served", dev.connections.size());
+  std::string found = "its identity";
+  if (!d.assemblies.empty()) found += ", " + plural(d.assemblies.size(), "assembly instance");
+  if (!d.params.empty()) found += ", " + plural(d.params.size(), "parameter");
+  std::fprintf(stderr,
+               "edsc: warning: %s describes no EtherNet/IP connection (%s): a scanner finds the device and reads %s "
+               "and the EDS by explicit messages, but can open no I/O connection (every Forward_Open of class 1 is "
+               "refused)\n",
+               file.c_str(), why.c_str(), found.c_str());
+}
+
 int run_sim(const sim_cli& cli) {
+  if (cli.port == sim::server_options{}.io_port) {
+    print_error(fmt::format("--port {}: that is the class 1 I/O port (UDP {}); the encapsulation port must be another "
+                            "(the default is 44818)",
+                            cli.port, cli.port));
+    return exit_failure;
+  }
   auto source = read_or_report(cli.eds);
   if (!source) return exit_failure;
   auto checked = analyze(std::move(source), check_options{});
@@ -84,6 +117,7 @@ int run_sim(const sim_cli& cli) {
   if (!cli.inputs.empty() && !load_inputs(cli.inputs, s)) return exit_failure;
   for (const auto& u : s.dev.skipped)
     std::fprintf(stderr, "edsc: note: Connection%u not served: %s\n", u.number, u.why.c_str());
+  warn_without_connections(cli.eds, checked->dev, s.dev);
   struct sigaction sa {};
   sa.sa_handler = on_stop_signal;
   ::sigaction(SIGINT, &sa, nullptr);
@@ -116,7 +150,8 @@ void register_sim(CLI::App& app, command_action& run) {
         arg_kind::text)
       ->type_name("ADDR");
   add_number(cmd, "--port", cli->port, std::uint16_t{0}, std::uint16_t{65535},
-             "Encapsulation port, TCP and UDP (default 44818); class 1 I/O stays on UDP 2222");
+             "Encapsulation port, TCP and UDP (default 44818; 0: one the system picks, reported when listening); "
+             "class 1 I/O stays on UDP 2222, which --port may not take");
   add_number(cmd, "--serial", cli->serial, std::uint32_t{0}, std::uint32_t{0xFFFFFFFF},
              "Serial number the Identity object reports (default 1)");
   takes(cmd->add_option("--inputs", cli->inputs,

@@ -154,8 +154,8 @@ std::vector<connection_plan> plan_connections(const model::device& dev) {
     p.to_rpi_us = static_cast<std::uint32_t>(emit::number_or_param_default(dev, c.to_rpi).value_or(0));
     if (p.to_rpi_us == 0) p.to_rpi_us = p.ot_rpi_us;
     if (p.ot_rpi_us == 0) p.ot_rpi_us = p.to_rpi_us;
+    if (p.ot_rpi_us == 0) p.ot_rpi_us = p.to_rpi_us = default_rpi_us;
     if (!(c.tt.transport_classes & 0x2)) p.not_openable = "it is not a class 1 connection";
-    else if (p.ot_rpi_us == 0) p.not_openable = "it gives no RPI (neither a number nor a parameter default)";
     else if (p.listen_only) p.not_openable = "a listen-only connection needs an owner connection that edsc does not hold";
     const auto* path = dev.path_of(c.path);
     if (p.not_openable.empty() && path == nullptr) p.not_openable = "it has no connection path";

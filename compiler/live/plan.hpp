@@ -15,6 +15,10 @@
 
 namespace edsc::live {
 
+// The RPI edsc asks where a ConnectionN leaves both RPI fields empty: the
+// EDS sets no interval and leaves it to the tool (EDS_FORMAT.md §3.11.1).
+inline constexpr std::uint32_t default_rpi_us = 10'000;
+
 struct connection_plan {
   const model::connection* conn = nullptr;
   emit::eip_connection_facts facts;

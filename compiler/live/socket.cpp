@@ -148,10 +148,14 @@ std::optional<net_error> recv_exact(int s, std::uint8_t* out, std::size_t n, clo
 result<fd> udp_socket(const sockaddr_in& local) {
   fd s(::socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0));
   if (!s.valid()) return net_error{fmt::format("cannot create a UDP socket: {}", errno_text(errno))};
-  const int one = 1;
-  ::setsockopt(s.get(), SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
-  if (::bind(s.get(), reinterpret_cast<const sockaddr*>(&local), sizeof local) != 0)
-    return net_error{fmt::format("cannot bind UDP {}: {}", to_string(local), errno_text(errno))};
+  // No SO_REUSEADDR: with it, Linux lets a second program bind the same
+  // address and port, and the datagrams meant for one go to the other.
+  if (::bind(s.get(), reinterpret_cast<const sockaddr*>(&local), sizeof local) != 0) {
+    if (errno != EADDRINUSE) return net_error{fmt::format("cannot bind UDP {}: {}", to_string(local), errno_text(errno))};
+    char addr[INET_ADDRSTRLEN] = {};
+    ::inet_ntop(AF_INET, &local.sin_addr, addr, sizeof addr);
+    return net_error{fmt::format("UDP port {} on {} is already in use by another program", ntohs(local.sin_port), addr)};
+  }
   return s;
 }
 

@@ -10,18 +10,46 @@ namespace {
 
 std::uint32_t number_or_zero(const model::value& v) { return v.is_integer() ? static_cast<std::uint32_t>(v.as_uint()) : 0; }
 
-// The RPI range a scanner may ask for: the limits of the parameter the RPI
-// field names, else any interval from 0.1 ms to 10 s (a fixed number in the
-// EDS is the default a tool proposes, not the only value a device takes).
-void rpi_range(const model::device& dev, const model::value& v, std::uint32_t& lo, std::uint32_t& hi) {
-  lo = 100;
-  hi = 10'000'000;
-  const auto* r = v.as_ref();
-  if (r == nullptr || r->kind != schema::ref_kind::param || !r->resolved() || r->target >= dev.params.size()) return;
-  const auto& p = dev.params[r->target];
-  if (p.min.is_integer() && !p.min.negative) lo = static_cast<std::uint32_t>(std::min<std::uint64_t>(p.min.as_uint(), hi));
-  if (p.max.is_integer() && !p.max.negative && p.max.as_uint() >= lo)
-    hi = static_cast<std::uint32_t>(std::min<std::uint64_t>(p.max.as_uint(), 0xFFFFFFFFu));
+void put_le(cip::bytes& b, std::uint64_t v, std::size_t n) {
+  b.clear();
+  for (std::size_t i = 0; i < n; ++i) b.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+}
+std::uint64_t get_le(cip::byte_view b) {
+  std::uint64_t v = 0;
+  for (std::size_t i = 0; i < b.size() && i < 8; ++i) v |= std::uint64_t{b[i]} << (8 * i);
+  return v;
+}
+
+// The RPIs one RPI field lets a scanner ask. A fixed number widens the
+// default limits to include it; a ParamN of an unsigned type gives exactly
+// the limits its Parameter object instance reports, and where the EDS leaves
+// a limit out that instance reports the default one: a scanner that reads the
+// parameter's limits and the Connection Manager agree.
+rpi_limits rpi_limits_of(const model::device& dev, device& d, const model::value& field) {
+  rpi_limits r;
+  if (!field.present()) {
+    r.unset = true;
+    return r;
+  }
+  if (field.is_integer()) {
+    const auto n = static_cast<std::uint32_t>(std::min<std::uint64_t>(field.as_uint(), 0xFFFFFFFFu));
+    r.min_us = std::min(r.min_us, n);
+    r.max_us = std::max(r.max_us, n);
+    return r;
+  }
+  const auto* ref = field.as_ref();
+  if (ref == nullptr || ref->kind != schema::ref_kind::param || !ref->resolved() || ref->target >= dev.params.size())
+    return r;
+  const auto& mp = dev.params[ref->target];
+  auto* pi = d.param(mp.number);
+  if (pi == nullptr || pi->type == nullptr || pi->type->cls != schema::type_class::unsigned_int || pi->type->size > 4)
+    return r;
+  if (!mp.min.is_integer()) put_le(pi->min, std::min<std::uint64_t>(default_rpi_min_us, pi->type->max), pi->type->size);
+  if (!mp.max.is_integer()) put_le(pi->max, std::min<std::uint64_t>(default_rpi_max_us, pi->type->max), pi->type->size);
+  r.min_us = static_cast<std::uint32_t>(get_le(pi->min));
+  r.max_us = static_cast<std::uint32_t>(get_le(pi->max));
+  r.param = mp.number;
+  return r;
 }
 
 void add_assembly(device& d, std::uint32_t instance, std::uint32_t size, assembly_role role) {
@@ -76,10 +104,6 @@ device build_device(const model::device& dev, std::uint32_t serial) {
       d.skipped.push_back({c.number, "it is not a class 1 connection"});
       continue;
     }
-    if (p.ot_rpi_us == 0) {
-      d.skipped.push_back({c.number, "it gives no RPI (neither a number nor a parameter default)"});
-      continue;
-    }
     const auto* path = dev.path_of(c.path);
     if (path == nullptr) {
       d.skipped.push_back({c.number, "it has no connection path"});
@@ -92,9 +116,6 @@ device build_device(const model::device& dev, std::uint32_t serial) {
     cp.kind = p.listen_only                               ? point_kind::listen_only
               : c.tt.input_only && !c.tt.exclusive_owner ? point_kind::input_only
                                                          : point_kind::exclusive_owner;
-    rpi_range(dev, c.ot_rpi, cp.rpi_min_us, cp.rpi_max_us);
-    cp.rpi_min_us = std::min(cp.rpi_min_us, std::min(p.ot_rpi_us, p.to_rpi_us));
-    cp.rpi_max_us = std::max(cp.rpi_max_us, std::max(p.ot_rpi_us, p.to_rpi_us));
     const auto& f = p.facts;
     add_assembly(d, f.input_instance, f.input_size, assembly_role::input);
     add_assembly(d, f.output_instance, f.output_size, assembly_role::output);
@@ -111,6 +132,10 @@ device build_device(const model::device& dev, std::uint32_t serial) {
   std::sort(d.assemblies.begin(), d.assemblies.end(),
             [](const auto& a, const auto& b) { return a.instance < b.instance; });
   add_parameters(dev, d);
+  for (auto& cp : d.points) {
+    cp.ot_rpi = rpi_limits_of(dev, d, cp.plan.conn->ot_rpi);
+    cp.to_rpi = rpi_limits_of(dev, d, cp.plan.conn->to_rpi);
+  }
   add_fields(dev, d);
   if (const auto& r = dev.file.revision; r.ok() && r.kind == model::value_kind::revision) {
     d.file.major = static_cast<std::uint8_t>(r.r.major);

@@ -38,6 +38,17 @@ struct assembly_instance {
 
 enum class point_kind : std::uint8_t { exclusive_owner, input_only, listen_only };
 
+// Any RPI from 0.1 ms to 10 s: what a field that sets no limit (empty, or a
+// fixed number, which is the default a tool proposes) leaves a scanner.
+inline constexpr std::uint32_t default_rpi_min_us = 100, default_rpi_max_us = 10'000'000;
+
+// The RPIs one direction of a ConnectionN accepts.
+struct rpi_limits {
+  std::uint32_t min_us = default_rpi_min_us, max_us = default_rpi_max_us;
+  std::uint32_t param = 0;  // N of the ParamN the RPI field names (its limits, as the Parameter object reports them)
+  bool unset = false;       // the field is empty: the EDS sets no limit
+};
+
 // One ConnectionN the simulator accepts Forward_Open for.
 struct connection_point {
   std::uint32_t number = 0;  // N of ConnectionN
@@ -45,7 +56,7 @@ struct connection_point {
   cip::bytes app_path;                      // owns what `segments` views
   std::vector<cip::path_segment> segments;  // the application path, widths forgotten
   point_kind kind = point_kind::exclusive_owner;
-  std::uint32_t rpi_min_us = 0, rpi_max_us = 0;
+  rpi_limits ot_rpi, to_rpi;
 };
 
 // One ParamN served as Parameter object (class 0x0F) instance N, its

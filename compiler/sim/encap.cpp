@@ -2,6 +2,8 @@
 // SendRRData and SendUnitData, and the statuses ETHERNETIP_LIVE.md §3 lists
 // for what is wrong (invalid command 0x0001, incorrect data 0x0003, invalid
 // session handle 0x0064, invalid length 0x0065, unsupported protocol 0x0069).
+#include <cstring>
+
 #include "cip/device_reply.hpp"
 #include "cip/encap.hpp"
 #include "sim/state.hpp"
@@ -79,6 +81,7 @@ encap_outcome handle_encap(state& s, link& l, cip::byte_view message, bool tcp, 
     case command::list_identity: {
       auto id = s.dev.id;
       id.status = device_status(s);
+      std::memcpy(id.sin_addr.data(), &l.local_ip, 4);  // both in network order
       out.reply = cip::encode_encap_reply(h.command, 0, 0, h.context, cip::list_identity_reply(id));
       return out;
     }

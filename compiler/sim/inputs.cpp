@@ -2,9 +2,12 @@
 // ParamN) and setting input data by bytes or by field.
 #include "sim/inputs.hpp"
 
+#include <algorithm>
+#include <bit>
 #include <cctype>
 #include <charconv>
-#include <cstring>
+#include <variant>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -123,45 +126,85 @@ std::optional<input_refusal> set_bytes(assembly_instance& a, std::string_view he
   return std::nullopt;
 }
 
-std::optional<input_refusal> set_field(assembly_instance& a, std::string_view name, field_number v) {
-  const input_field* f = nullptr;
-  for (const auto& x : a.fields)
-    if (same_name(name, x.name) || same_name(name, fmt::format("Param{}", x.param))) {
-      f = &x;
-      break;
-    }
-  if (f == nullptr) {
-    std::string known;
-    for (const auto& x : a.fields) known += (known.empty() ? "" : ", ") + describe(x);
+namespace {
+
+// "a 16-bit", "an 8-bit": the article as the number is spoken (widths up to 64).
+const char* article(std::uint32_t n) { return n == 8 || n == 11 || n == 18 ? "an" : "a"; }
+
+// `v` in the field's encoding, or why it does not fit.
+std::variant<std::uint64_t, input_refusal> encode(const input_field& f, field_number v) {
+  if (f.is_real) {
+    const double d = v.is_real ? v.real : static_cast<double>(v.integer);
+    if (f.bits == 32) return std::uint64_t{std::bit_cast<std::uint32_t>(static_cast<float>(d))};
+    return std::bit_cast<std::uint64_t>(d);
+  }
+  if (v.is_real)
+    return input_refusal{diag_id::sim_inputs_value_range,
+                         fmt::format("{} is {} {}-bit integer field: {} is not an integer", describe(f), article(f.bits),
+                                     f.bits, v.real)};
+  const auto bits = f.bits;
+  const std::int64_t lo = f.is_signed ? (bits >= 64 ? INT64_MIN : -(std::int64_t{1} << (bits - 1))) : 0;
+  const std::int64_t hi = bits >= 64 ? INT64_MAX
+                          : f.is_signed ? (std::int64_t{1} << (bits - 1)) - 1
+                                        : static_cast<std::int64_t>((std::uint64_t{1} << bits) - 1);
+  if (v.integer < lo || v.integer > hi)
+    return input_refusal{diag_id::sim_inputs_value_range,
+                         fmt::format("{} is {} {}-bit {} field: {} does not fit ({}..{})", describe(f), article(bits), bits,
+                                     f.is_signed ? "signed" : "unsigned", v.integer, lo, hi)};
+  return static_cast<std::uint64_t>(v.integer);
+}
+
+// Every member `name` names: one parameter's (a ParamN may stand in several
+// members); an unknown name or one that two parameters share is refused.
+std::variant<std::vector<const input_field*>, input_refusal> fields_named(const assembly_instance& a,
+                                                                          std::string_view name) {
+  std::vector<const input_field*> hits;
+  std::vector<std::string> params;  // each parameter once, in member order
+  const auto add_once = [](std::vector<std::string>& list, std::string item) {
+    if (std::find(list.begin(), list.end(), item) == list.end()) list.push_back(std::move(item));
+  };
+  std::vector<std::string> known;
+  for (const auto& x : a.fields) {
+    add_once(known, describe(x));
+    if (!same_name(name, x.name) && !same_name(name, fmt::format("Param{}", x.param))) continue;
+    hits.push_back(&x);
+    add_once(params, describe(x));
+  }
+  const auto joined = [](const std::vector<std::string>& list) {
+    std::string out;
+    for (const auto& item : list) out += (out.empty() ? "" : ", ") + item;
+    return out;
+  };
+  if (hits.empty())
     return input_refusal{diag_id::sim_inputs_unknown_field,
                          fmt::format("instance {} has no field \"{}\"{}{}", a.instance, name,
-                                     known.empty() ? " (its AssemN names no parameters)" : "; its fields: ", known)};
+                                     known.empty() ? " (its AssemN names no parameters)" : "; its fields: ", joined(known))};
+  if (params.size() > 1)
+    return input_refusal{diag_id::sim_inputs_unknown_field,
+                         fmt::format("\"{}\" names {} fields of instance {}: {}; name one by its ParamN", name,
+                                     params.size(), a.instance, joined(params))};
+  return hits;
+}
+
+}  // namespace
+
+std::optional<std::uint32_t> field_param(const assembly_instance& a, std::string_view name) {
+  const auto found = fields_named(a, name);
+  if (const auto* hits = std::get_if<std::vector<const input_field*>>(&found)) return hits->front()->param;
+  return std::nullopt;
+}
+
+std::optional<input_refusal> set_field(assembly_instance& a, std::string_view name, field_number v) {
+  auto found = fields_named(a, name);
+  if (auto* why = std::get_if<input_refusal>(&found)) return std::move(*why);
+  const auto& hits = std::get<std::vector<const input_field*>>(found);
+  std::vector<std::uint64_t> raw;
+  for (const auto* f : hits) {
+    auto e = encode(*f, v);
+    if (auto* why = std::get_if<input_refusal>(&e)) return std::move(*why);
+    raw.push_back(std::get<std::uint64_t>(e));
   }
-  std::uint64_t raw = 0;
-  if (f->is_real) {
-    const double d = v.is_real ? v.real : static_cast<double>(v.integer);
-    if (f->bits == 32) {
-      const auto x = static_cast<float>(d);
-      std::uint32_t u = 0;
-      std::memcpy(&u, &x, 4);
-      raw = u;
-    } else std::memcpy(&raw, &d, 8);
-  } else {
-    if (v.is_real)
-      return input_refusal{diag_id::sim_inputs_value_range, fmt::format("{} is a {}-bit integer field: {} is not an integer",
-                                                                        describe(*f), f->bits, v.real)};
-    const auto bits = f->bits;
-    const std::int64_t lo = f->is_signed ? (bits >= 64 ? INT64_MIN : -(std::int64_t{1} << (bits - 1))) : 0;
-    const std::int64_t hi = bits >= 64 ? INT64_MAX
-                            : f->is_signed ? (std::int64_t{1} << (bits - 1)) - 1
-                                           : static_cast<std::int64_t>((std::uint64_t{1} << bits) - 1);
-    if (v.integer < lo || v.integer > hi)
-      return input_refusal{diag_id::sim_inputs_value_range,
-                           fmt::format("{} is a {}-bit {} field: {} does not fit ({}..{})", describe(*f), bits,
-                                       f->is_signed ? "signed" : "unsigned", v.integer, lo, hi)};
-    raw = static_cast<std::uint64_t>(v.integer);
-  }
-  put_bits(a.data, f->bit, f->bits, raw);
+  for (std::size_t i = 0; i < hits.size(); ++i) put_bits(a.data, hits[i]->bit, hits[i]->bits, raw[i]);
   a.fixed = true;
   return std::nullopt;
 }

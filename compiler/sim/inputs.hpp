@@ -34,7 +34,11 @@ struct input_refusal {
 // Each sets the data and fixes it (the counter pattern leaves it alone from
 // then on); the refusal, or nullopt.
 [[nodiscard]] std::optional<input_refusal> set_bytes(assembly_instance& a, std::string_view hex);
+// A name several members share (one ParamN in each) sets every one of
+// them; a name two parameters share is refused as ambiguous.
 [[nodiscard]] std::optional<input_refusal> set_field(assembly_instance& a, std::string_view name, field_number v);
+// The ParamN a field name stands for, when it names exactly one parameter.
+[[nodiscard]] std::optional<std::uint32_t> field_param(const assembly_instance& a, std::string_view name);
 
 struct input_error {
   diag_id id{};

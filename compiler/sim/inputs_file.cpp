@@ -1,6 +1,8 @@
 // `--inputs FILE` as JSON or TOML, and the control lines of standard input.
 #include <algorithm>
-#include <sstream>
+#include <cctype>
+#include <map>
+#include <set>
 #include <vector>
 
 #include <fmt/format.h>
@@ -29,23 +31,84 @@ input_refusal unknown_assembly(std::string_view key) {
           fmt::format("\"{}\" names no assembly of the EDS (an instance number such as 100, or AssemN)", key)};
 }
 
+// Assemblies and fields a file has set, and on which line: a second setting
+// of either, under any spelling, is refused rather than taking the last.
+class first_settings {
+ public:
+  std::optional<input_refusal> assembly(std::string_view key, const assembly_instance& a, std::uint32_t line) {
+    const auto [it, fresh] = assemblies_.try_emplace(a.instance, line);
+    if (fresh) return std::nullopt;
+    return syntax(fmt::format("\"{}\" names instance {} a second time (first on line {})", key, a.instance, it->second));
+  }
+  std::optional<input_refusal> field(std::string_view name, const assembly_instance& a, std::uint32_t line) {
+    const auto param = field_param(a, name);
+    if (!param) return std::nullopt;  // set_field says why
+    const auto [it, fresh] = fields_.try_emplace({a.instance, *param}, line);
+    if (fresh) return std::nullopt;
+    std::string what = fmt::format("Param{}", *param);
+    for (const auto& f : a.fields)
+      if (f.param == *param && !f.name.empty()) what = fmt::format("\"{}\" (Param{})", f.name, *param);
+    return syntax(fmt::format("\"{}\" sets {} of instance {} a second time (first on line {})", name, what, a.instance,
+                              it->second));
+  }
+
+ private:
+  std::map<std::uint32_t, std::uint32_t> assemblies_;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> fields_;
+};
+
+// The first character of 1-based `line` that is not a blank (1 when none).
+std::uint32_t first_column(std::string_view text, std::uint32_t line) {
+  std::size_t at = 0;
+  for (std::uint32_t l = 1; l < line; ++l) {
+    const auto nl = text.find('\n', at);
+    if (nl == std::string_view::npos) return 1;
+    at = nl + 1;
+  }
+  const auto first = text.find_first_not_of(" \t", at);
+  return first == std::string_view::npos || text[first] == '\n' ? 1 : static_cast<std::uint32_t>(first - at + 1);
+}
+
+// A table's keys in file order (toml++ keeps them sorted by name).
+std::vector<std::pair<const toml::key*, const toml::node*>> in_file_order(const toml::table& t) {
+  std::vector<std::pair<const toml::key*, const toml::node*>> out;
+  for (const auto& [key, node] : t) out.emplace_back(&key, &node);
+  std::sort(out.begin(), out.end(), [](const auto& x, const auto& y) {
+    const auto &a = x.first->source().begin, &b = y.first->source().begin;
+    return a.line != b.line ? a.line < b.line : a.column < b.column;
+  });
+  return out;
+}
+
 std::optional<input_error> load_toml(device& d, const std::string& path, std::string_view text) {
   toml::table root;
   try {
     root = toml::parse(text, path);
   } catch (const toml::parse_error& e) {
-    return at(e.source(), syntax(fmt::format("not TOML: {}", e.description())));
+    auto err = at(e.source(), syntax(fmt::format("not TOML: {}", e.description())));
+    // A key given twice: toml++ points at the value; the key is the mistake.
+    if (e.description().find("cannot redefine") != std::string_view::npos) err.column = first_column(text, err.line);
+    return err;
   }
-  for (const auto& [key, node] : root) {
+  first_settings seen;
+  for (const auto& [key_ptr, node_ptr] : in_file_order(root)) {
+    const auto& key = *key_ptr;
+    const auto& node = *node_ptr;
     auto* a = find_assembly(d, key.str());
     if (a == nullptr) return at(key.source(), unknown_assembly(key.str()));
+    if (auto why = seen.assembly(key.str(), *a, static_cast<std::uint32_t>(key.source().begin.line)))
+      return at(key.source(), *why);
     if (const auto* s = node.as_string()) {
       if (auto why = set_bytes(*a, s->get())) return at(node.source(), *why);
       continue;
     }
     const auto* fields = node.as_table();
     if (fields == nullptr) return at(node.source(), syntax("an assembly is a hex string or a table of field = number"));
-    for (const auto& [name, value] : *fields) {
+    for (const auto& [name_ptr, value_ptr] : in_file_order(*fields)) {
+      const auto& name = *name_ptr;
+      const auto& value = *value_ptr;
+      if (auto why = seen.field(name.str(), *a, static_cast<std::uint32_t>(name.source().begin.line)))
+        return at(name.source(), *why);
       field_number v;
       if (const auto* i = value.as_integer()) v.integer = i->get();
       else if (const auto* f = value.as_floating_point()) v = {true, 0, f->get()};
@@ -72,18 +135,43 @@ std::size_t find_key(std::string_view text, std::string_view key, std::size_t fr
   return pos == std::string_view::npos ? from : pos;
 }
 
+// The first key written twice in one JSON object (nlohmann keeps the last
+// silently), or nothing.
+std::optional<std::string> repeated_key(std::string_view text) {
+  std::vector<std::set<std::string>> open;
+  std::optional<std::string> repeated;
+  using event = nlohmann::json::parse_event_t;
+  const nlohmann::json::parser_callback_t note = [&](int, event e, nlohmann::json& parsed) {
+    if (e == event::object_start) open.emplace_back();
+    if (e == event::object_end && !open.empty()) open.pop_back();
+    if (e == event::key && !open.empty() && !open.back().insert(parsed.get<std::string>()).second && !repeated)
+      repeated = parsed.get<std::string>();
+    return true;
+  };
+  [[maybe_unused]] const auto whole = nlohmann::json::parse(text, note, false);  // no exceptions: the main parse reports
+  return repeated;
+}
+
 std::optional<input_error> load_json(device& d, std::string_view text) {
-  nlohmann::json j;
+  nlohmann::ordered_json j;  // in file order: the first setting is the first written
   try {
-    j = nlohmann::json::parse(text);
+    j = nlohmann::ordered_json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
     return located(text, e.byte > 0 ? e.byte - 1 : 0, syntax(fmt::format("not JSON: {}", e.what())));
   }
   if (!j.is_object()) return located(text, 0, syntax("the file is a JSON object of assembly: \"hex\" or {field: number}"));
-  for (const auto& [key, value] : j.items()) {  // in key order, not the file's: each found from the start
+  if (const auto key = repeated_key(text)) {
+    const auto first = find_key(text, *key, 0);
+    const auto line = located(text, first, {}).line;
+    return located(text, find_key(text, *key, first + 1),
+                   syntax(fmt::format("\"{}\" is given twice in one object (first on line {})", *key, line)));
+  }
+  first_settings seen;
+  for (const auto& [key, value] : j.items()) {
     const auto key_at = find_key(text, key, 0);
     auto* a = find_assembly(d, key);
     if (a == nullptr) return located(text, key_at, unknown_assembly(key));
+    if (auto why = seen.assembly(key, *a, located(text, key_at, {}).line)) return located(text, key_at, *why);
     if (value.is_string()) {
       if (auto why = set_bytes(*a, value.get<std::string>())) return located(text, key_at, *why);
       continue;
@@ -91,6 +179,7 @@ std::optional<input_error> load_json(device& d, std::string_view text) {
     if (!value.is_object()) return located(text, key_at, syntax("an assembly is a hex string or an object of field: number"));
     for (const auto& [name, v] : value.items()) {
       const auto name_at = find_key(text, name, key_at);
+      if (auto why = seen.field(name, *a, located(text, name_at, {}).line)) return located(text, name_at, *why);
       field_number n;
       if (v.is_number_integer() && !(v.is_number_unsigned() && v.get<std::uint64_t>() > INT64_MAX)) n.integer = v.get<std::int64_t>();
       else if (v.is_number()) n = {true, 0, v.get<double>()};
@@ -112,6 +201,26 @@ std::string refuse(const input_refusal& why) {
                                    rule_of(why.id).name));
 }
 
+// The words of a control line, split at blanks; a double-quoted part may
+// hold blanks ("Gain Value"=1.5) and loses its quotes. False: a quote is left open.
+bool split_words(std::string_view line, std::vector<std::string>& words) {
+  bool quoted = false, in_word = false;
+  for (const char c : line) {
+    if (c == '"') {
+      quoted = !quoted;
+      if (!in_word) words.emplace_back();
+      in_word = true;
+    } else if (!quoted && std::isspace(static_cast<unsigned char>(c))) {
+      in_word = false;
+    } else {
+      if (!in_word) words.emplace_back();
+      in_word = true;
+      words.back() += c;
+    }
+  }
+  return !quoted;
+}
+
 }  // namespace
 
 std::optional<input_error> load_inputs(device& d, const std::string& path, std::string_view text) {
@@ -119,9 +228,8 @@ std::optional<input_error> load_inputs(device& d, const std::string& path, std::
 }
 
 std::string control(state& s, std::string_view line) {
-  std::istringstream in{std::string(line)};
   std::vector<std::string> words;
-  for (std::string w; in >> w;) words.push_back(w);
+  if (!split_words(line, words)) return refuse(syntax("a double quote is left unclosed"));
   if (words.empty() || words[0][0] == '#') return {};
   if (words[0] != "set" && words[0] != "get")
     return refuse(syntax(fmt::format("unknown command \"{}\": set ASSEMBLY HEX... | set ASSEMBLY FIELD=NUMBER... | get ASSEMBLY", words[0])));

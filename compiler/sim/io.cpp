@@ -78,11 +78,13 @@ void consume_io(state& s, cip::byte_view frame, std::uint32_t from_ip, clock::ti
   const bool fresh = !c->consumed_any || f->sequence_count != c->last_consumed_sequence;
   c->consumed_any = true;
   c->last_consumed_sequence = f->sequence_count;
-  if (!fresh || p.plan.facts.output_size == 0) return;
+  const bool run = f->run_idle && (*f->run_idle & 1);
+  const bool run_changed = run != c->run;  // a PLC going to program mode may keep its data
+  c->run = run;
+  if ((!fresh && !run_changed) || p.plan.facts.output_size == 0) return;
   auto* a = s.dev.assembly(p.plan.facts.output_instance);
   if (a == nullptr) return;
-  const bool run = f->run_idle && (*f->run_idle & 1);
-  if (a->data != f->data || c->consumed == 1) {
+  if (a->data != f->data || c->consumed == 1 || run_changed) {
     a->data = f->data;
     log_event(s, "output", fmt::format("\"instance\":{},\"connection\":{},\"run\":{},\"sequence\":{},\"data\":\"{}\"",
                                        a->instance, p.number, run, f->sequence_count, hex(a->data)));

@@ -10,12 +10,14 @@
 
 #include <cerrno>
 #include <cstring>
+#include <optional>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "live/socket.hpp"
 #include "sim/inputs.hpp"
+#include "sim/sockets.hpp"
 
 namespace edsc::sim {
 
@@ -30,20 +32,6 @@ struct client {
 
 constexpr std::size_t max_clients = 64;
 constexpr std::size_t max_message = cip::encap_header_size + 0xFFFF;
-
-std::string bind_error(const char* what, const std::string& addr, std::uint16_t port) {
-  return fmt::format("cannot bind {} {}:{}: {}", what, addr, port, std::strerror(errno));
-}
-
-live::fd open_socket(int type, const sockaddr_in& at) {
-  live::fd s(::socket(AF_INET, type | SOCK_NONBLOCK | SOCK_CLOEXEC, 0));
-  if (!s.valid()) return s;
-  const int one = 1;
-  ::setsockopt(s.get(), SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
-  if (::bind(s.get(), reinterpret_cast<const sockaddr*>(&at), sizeof at) != 0) return live::fd();
-  if (type == SOCK_STREAM && ::listen(s.get(), 16) != 0) return live::fd();
-  return s;
-}
 
 // A reply that does not fit the socket's buffer at once ends the client:
 // a scanner reads its replies, one that does not is not served.
@@ -96,24 +84,26 @@ bool read_control(state& s, int fd, std::string& pending, const std::function<vo
 
 }  // namespace
 
+std::string listening_line(const state& s, const std::string& address, std::uint16_t port, std::uint16_t io_port) {
+  auto line = fmt::format("{{\"event\":\"listening\",\"address\":\"{}\",\"port\":{},\"io_port\":{},"
+                          "\"connection_points\":{},\"assemblies\":{}",
+                          address, port, io_port, s.dev.points.size(), s.dev.assemblies.size());
+  std::string unset;
+  for (const auto& p : s.dev.points)
+    if (p.ot_rpi.unset || p.to_rpi.unset) unset += fmt::format("{}{}", unset.empty() ? "" : ",", p.number);
+  if (!unset.empty())
+    line += fmt::format(",\"default_rpi\":{{\"connections\":[{}],\"min_us\":{},\"max_us\":{}}}", unset,
+                        default_rpi_min_us, default_rpi_max_us);
+  return line + "}";
+}
+
 std::string serve(state& s, const server_options& opt, const std::atomic<bool>& stop,
                   const std::function<void(const std::string&)>& emit) {
-  sockaddr_in at{};
-  at.sin_family = AF_INET;
-  if (::inet_pton(AF_INET, opt.address.c_str(), &at.sin_addr) != 1)
-    return fmt::format("--address {}: not an IPv4 address", opt.address);
-  at.sin_port = htons(opt.port);
-  auto tcp = open_socket(SOCK_STREAM, at);
-  if (!tcp.valid()) return bind_error("TCP", opt.address, opt.port);
-  auto udp = open_socket(SOCK_DGRAM, at);
-  if (!udp.valid()) return bind_error("UDP", opt.address, opt.port);
-  sockaddr_in io_at = at;
-  io_at.sin_port = htons(opt.io_port);
-  auto io = open_socket(SOCK_DGRAM, io_at);
-  if (!io.valid()) return bind_error("UDP (class 1 I/O)", opt.address, opt.io_port);
-  emit(fmt::format("{{\"event\":\"listening\",\"address\":\"{}\",\"port\":{},\"io_port\":{},\"connection_points\":{},"
-                   "\"assemblies\":{}}}",
-                   opt.address, opt.port, opt.io_port, s.dev.points.size(), s.dev.assemblies.size()));
+  auto opened = open_sockets(opt);
+  if (auto* e = live::failed(opened)) return e->message;
+  auto& [tcp, udp, io, port] = std::get<sockets>(opened);
+  s.dev.id.sin_port = port;
+  emit(listening_line(s, opt.address, port, opt.io_port));
 
   std::vector<client> clients;
   std::uint64_t produced = 0;
@@ -152,18 +142,19 @@ std::string serve(state& s, const server_options& opt, const std::atomic<bool>& 
         sockaddr_in peer{};
         socklen_t len = sizeof peer;
         live::fd c(::accept4(tcp.get(), reinterpret_cast<sockaddr*>(&peer), &len, SOCK_NONBLOCK | SOCK_CLOEXEC));
-        if (c.valid() && clients.size() < max_clients) clients.push_back({std::move(c), {peer.sin_addr.s_addr, 0}, {}, now});
+        if (c.valid() && clients.size() < max_clients) {
+          const link l{peer.sin_addr.s_addr, 0, local_address(c.get())};
+          clients.push_back({std::move(c), l, {}, now});
+        }
       }
       if (fds[1].revents & POLLIN) {
         std::uint8_t buf[2048];
-        sockaddr_in peer{};
-        socklen_t len = sizeof peer;
-        const auto n = ::recvfrom(udp.get(), buf, sizeof buf, 0, reinterpret_cast<sockaddr*>(&peer), &len);
-        if (n > 0) {
-          link l{peer.sin_addr.s_addr, 0};
-          const auto out = handle_encap(s, l, cip::byte_view(buf, static_cast<std::size_t>(n)), false, now);
+        if (const auto d = receive(udp.get(), buf, sizeof buf)) {
+          link l{d->peer.sin_addr.s_addr, 0, d->local_ip};
+          const auto out = handle_encap(s, l, cip::byte_view(buf, d->size), false, now);
           if (out.reply)
-            (void)::sendto(udp.get(), out.reply->data(), out.reply->size(), 0, reinterpret_cast<sockaddr*>(&peer), len);
+            (void)::sendto(udp.get(), out.reply->data(), out.reply->size(), 0,
+                           reinterpret_cast<const sockaddr*>(&d->peer), sizeof d->peer);
         }
       }
       if (fds[2].revents & POLLIN)

@@ -22,6 +22,11 @@ struct server_options {
   int control_fd = -1;
 };
 
+// The first line the simulator prints: where it listens, what it serves, and
+// which connections are served with the default RPI limits (their EDS sets none).
+[[nodiscard]] std::string listening_line(const state& s, const std::string& address, std::uint16_t port,
+                                         std::uint16_t io_port);
+
 // Serves until `stop` turns true; each JSON line of the state's log goes to
 // `emit`. The error when a socket cannot be opened, else empty.
 [[nodiscard]] std::string serve(state& s, const server_options& opt, const std::atomic<bool>& stop,

@@ -29,6 +29,7 @@ struct open_connection {
   std::uint32_t encap_sequence = 0;
   std::uint16_t sequence = 0, last_consumed_sequence = 0;
   bool consumed_any = false;
+  bool run = false;  // the run/idle header of the last O->T frame said run
   std::uint64_t produced = 0, consumed = 0, wrong_size = 0, late = 0;
 };
 
@@ -36,6 +37,7 @@ struct open_connection {
 struct link {
   std::uint32_t peer_ip = 0;  // network order
   std::uint32_t session = 0;  // 0: none registered
+  std::uint32_t local_ip = 0;  // network order: the address the peer reached (ListIdentity reports it)
 };
 
 // An upload of the File object's instance (file_object.cpp): one at a time,
@@ -60,10 +62,23 @@ struct state {
 
 };
 
-// Identity attribute 5: owned (bit 0) while a connection is open; extended
-// state 3 (no I/O connection) or 6 (an I/O connection, the device runs).
+// Identity attribute 5 (the bits as OpENer's cipidentity.h names them):
+// bit 0 owned, "the device has an owner", while an exclusive owner
+// connection is open; bits 4-7 the extended device status, 3 no I/O
+// connection, 6 at least one I/O connection in run mode, 7 I/O connections
+// established, all idle. Run is what the run/idle header of the last O->T
+// frame said (as OpENer's cipioconnection.c sets it); a connection whose
+// O->T frames carry no such header never runs.
 [[nodiscard]] inline std::uint16_t device_status(const state& s) {
-  return s.connections.empty() ? 0x0030 : 0x0061;
+  bool io = false, run = false, owned = false;
+  for (const auto& c : s.connections) {
+    if (!c.point) continue;  // class 3 is explicit messaging, not I/O
+    io = true;
+    run = run || c.run;
+    owned = owned || s.dev.points[*c.point].kind == point_kind::exclusive_owner;
+  }
+  const std::uint16_t extended = !io ? 0x0030 : run ? 0x0060 : 0x0070;
+  return static_cast<std::uint16_t>(extended | (owned ? 0x0001 : 0));
 }
 
 // What to send back on the same socket; `close` ends a TCP connection.

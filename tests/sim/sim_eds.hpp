@@ -1,8 +1,14 @@
 #pragma once
-// A small EtherNet/IP EDS for the simulator's object tests: [File] (revision
-// 1.2) and [Device] (vendor 1, product code 2, revision 1.1), then `body`.
+// EDS text for the simulator's tests: a small EtherNet/IP EDS ([File]
+// revision 1.2, [Device] vendor 1, product code 2, revision 1.1, then
+// `body`), and a file of the corpora analysed as the simulator reads it.
+#include <fstream>
+#include <memory>
+#include <sstream>
 #include <string>
 #include <string_view>
+
+#include "edit/analyze.hpp"
 
 namespace edsc::sim_test {
 
@@ -25,6 +31,14 @@ ProdName = "simulator objects";
 Catalog = "s";
 
 )eds") + std::string(body);
+}
+
+// A file (OpENer's EDS, a corpus file) read and analysed; the analysis holds the text.
+inline std::unique_ptr<analysis> analyze_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return edit::analyze(path, text.str());
 }
 
 }  // namespace edsc::sim_test

@@ -233,6 +233,16 @@ const request_case cases[] = {
      },
      cip_answer(0), cip_answer(1, {0x0111}),
      "OpENer more lenient: it accepts an RPI of 0; sim keeps to the RPI's limits (else 0.1 ms to 10 s)"},
+    {"configuration_size_12",
+     [](raw_link& l) {
+       auto fo = connection1(0x510C);
+       cip::put_data_segment(fo.path, cip::bytes(12, 0));  // Assem151 holds 10
+       return forward_open(l, fo);
+     },
+     cip_answer(1, {0x0129}), cip_answer(1, {0x0126, 5}),
+     "both refuse, with other statuses: OpENer 0x0129 (invalid configuration application path: its assembly refuses "
+     "the data); sim 0x0126 (invalid configuration size, as Wireshark's CIP dissector names it) with the size it "
+     "takes in words"},
     {"forward_close_unknown", [](raw_link& l) { return forward_close(l, 0x51FF); }, cip_answer(1, {0x0107}),
      cip_answer(1, {0x0107})},
     {"connection_manager_unknown_service",
