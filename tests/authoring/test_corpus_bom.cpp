@@ -63,7 +63,9 @@ TEST(CorpusByteOrderMark, ChangesNoFindingAndIsKeptByEveryWriter) {
     const auto fa = edit::format(a->tree, {}, why_a);
     const auto fb = edit::format(b->tree, {}, why_b);
     ASSERT_EQ(fb.has_value(), fa.has_value()) << why_a << " / " << why_b;
-    if (fa) EXPECT_TRUE(*fb == bom + *fa) << "fmt";
+    if (fa) {
+      EXPECT_TRUE(*fb == bom + *fa) << "fmt";
+    }
 
     const auto xa = edit::fix_text(path, bytes, {});
     const auto xb = edit::fix_text(path, marked, {});

@@ -266,8 +266,9 @@ TEST(LspDiagnostics, AByteOrderMarkTheClientKeepsIsOneCharacter) {
   EXPECT_EQ((*marked)["range"]["start"], (json{{"line", 0}, {"character", 22}}));
   // Findings on later lines do not move.
   for (std::size_t i = 0; i < published[0].size(); ++i)
-    if (published[0][i]["range"]["start"]["line"] != 0)
+    if (published[0][i]["range"]["start"]["line"] != 0) {
       EXPECT_EQ(published[1][i]["range"], published[0][i]["range"]) << published[0][i].dump();
+    }
 
   const std::string clean = std::string(EDSC_PROJECT_DIR) + "/eds/rightsight-42ef-diffuse.eds";
   const std::string messy = bom + "   " + read_bytes(clean);

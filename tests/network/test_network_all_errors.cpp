@@ -38,8 +38,9 @@ TEST_F(Net, ANodeWithoutANameIsStillChecked) {
   EXPECT_EQ(count(got, "net-key-missing"), 1u);  // name
   ASSERT_EQ(count(got, "net-connection-not-offered"), 1u);
   for (const auto& d : c.diags)
-    if (d.id == edsc::diag_id::net_connection_not_offered)
+    if (d.id == edsc::diag_id::net_connection_not_offered) {
       EXPECT_NE(d.message.find("[[node]] 1"), std::string::npos) << d.message;
+    }
 }
 
 // Two nodes placed at the same DWord, and one whose data runs past the
