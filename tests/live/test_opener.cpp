@@ -49,7 +49,7 @@ class live_opener : public ::testing::Test {
   }
   // tcpdump on the device's interface into `pcap`, once it listens; its pid.
   pid_t capture(const std::string& pcap) {
-    const auto dump = net_->spawn({"tcpdump", "-i", net_->dev_if, "--immediate-mode", "-U", "-n", "-w", pcap}, "tcpdump.log");
+    const auto dump = net_->spawn({"tcpdump", "-i", net_->dev_if, "--immediate-mode", "-U", "-n", "-B", "8192", "-w", pcap}, "tcpdump.log");
     for (int i = 0; dump > 0 && i < 200 && shell("grep -q listening " + net_->dir + "/tcpdump.log").status != 0; ++i)
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
     return dump;
