@@ -8,7 +8,6 @@ namespace edsc::live {
 
 namespace {
 
-constexpr std::uint8_t initiate_upload = 0x4B, upload_transfer = 0x4F;
 constexpr std::uint8_t first = 0, middle = 1, last = 2, first_and_last = 4;
 
 net_error refused(const char* what, const cip::reply& r) {
@@ -18,9 +17,9 @@ net_error refused(const char* what, const cip::reply& r) {
 }  // namespace
 
 result<cip::bytes> upload_file(session& s, std::uint32_t instance) {
-  const auto path = cip::logical_path(0x37, instance);
+  const auto path = cip::logical_path(cip::class_id::file, instance);
   const std::uint8_t max_transfer = 0xFF;
-  auto init = s.request(initiate_upload, path, cip::byte_view(&max_transfer, 1));
+  auto init = s.request(cip::service::initiate_upload, path, cip::byte_view(&max_transfer, 1));
   if (auto* e = failed(init)) return *e;
   const auto& ir = std::get<cip::reply>(init);
   if (ir.general != 0) return refused("Initiate_Upload of the File object", ir);
@@ -31,7 +30,7 @@ result<cip::bytes> upload_file(session& s, std::uint32_t instance) {
   // A packet carries at least one byte, so the file's size bounds the packets.
   for (std::uint32_t n = 0; n <= size; ++n) {
     const auto number = static_cast<std::uint8_t>(n);
-    auto t = s.request(upload_transfer, path, cip::byte_view(&number, 1));
+    auto t = s.request(cip::service::upload_transfer, path, cip::byte_view(&number, 1));
     if (auto* e = failed(t)) return *e;
     const auto& r = std::get<cip::reply>(t);
     if (r.general != 0) return refused(fmt::format("Upload_Transfer {}", n).c_str(), r);

@@ -1,7 +1,6 @@
 // The encapsulation layer of the simulated device: list commands, sessions,
 // SendRRData and SendUnitData, and the statuses ETHERNETIP_LIVE.md §3 lists
-// for what is wrong (invalid command 0x0001, incorrect data 0x0003, invalid
-// session handle 0x0064, invalid length 0x0065, unsupported protocol 0x0069).
+// for what is wrong (cip::encap_status).
 #include <cstring>
 
 #include "cip/device_reply.hpp"
@@ -12,13 +11,12 @@ namespace edsc::sim {
 
 namespace {
 
-namespace status {
-constexpr std::uint32_t invalid_command = 0x0001, incorrect_data = 0x0003, invalid_session = 0x0064,
-                        invalid_length = 0x0065, unsupported_protocol = 0x0069;
-}
+using status = cip::encap_status;
 
-cip::bytes error_reply(const cip::encap_header& h, std::uint32_t code) {
-  return cip::encap_reply_header_only(h.command, h.session, code, h.context);
+cip::command command_of(const cip::encap_header& h) { return static_cast<cip::command>(h.command); }
+
+cip::bytes error_reply(const cip::encap_header& h, status code) {
+  return cip::encap_reply_header_only(command_of(h), h.session, code, h.context);
 }
 
 // Interface handle and timeout, then the CPF items.
@@ -56,7 +54,7 @@ std::optional<cip::bytes> unit_data(state& s, const link& l, const cip::encap_he
   c->expires = now + c->timeout;
   const auto answer = handle_cip(s, l, rd.rest(), now);
   cip::bytes body = cip::send_unit_data(c->to_id, sequence, answer);
-  return cip::encode_encap_reply(h.command, h.session, 0, h.context, body);
+  return cip::encode_encap_reply(command_of(h), h.session, status::success, h.context, body);
 }
 
 }  // namespace
@@ -76,28 +74,28 @@ encap_outcome handle_encap(state& s, link& l, cip::byte_view message, bool tcp, 
     return out;
   }
   using cip::command;
-  switch (static_cast<command>(h.command)) {
+  switch (command_of(h)) {
     case command::nop: return out;  // never answered
     case command::list_identity: {
       auto id = s.dev.id;
       id.status = device_status(s);
       std::memcpy(id.sin_addr.data(), &l.local_ip, 4);  // both in network order
-      out.reply = cip::encode_encap_reply(h.command, 0, 0, h.context, cip::list_identity_reply(id));
+      out.reply = cip::encode_encap_reply(command_of(h), 0, status::success, h.context, cip::list_identity_reply(id));
       return out;
     }
     case command::list_services:
-      out.reply = cip::encode_encap_reply(h.command, 0, 0, h.context, cip::list_services_reply());
+      out.reply = cip::encode_encap_reply(command_of(h), 0, status::success, h.context, cip::list_services_reply());
       return out;
     case command::list_interfaces: {
       cip::bytes none;
       cip::put_u16(none, 0);  // no interface items
-      out.reply = cip::encode_encap_reply(h.command, 0, 0, h.context, none);
+      out.reply = cip::encode_encap_reply(command_of(h), 0, status::success, h.context, none);
       return out;
     }
     default: break;
   }
   if (!tcp) return out;  // sessions and requests only over TCP; a datagram gets nothing
-  switch (static_cast<command>(h.command)) {
+  switch (command_of(h)) {
     case command::register_session: {
       cip::reader r(data);
       const auto version = r.u16("protocol version");
@@ -107,22 +105,22 @@ encap_outcome handle_encap(state& s, link& l, cip::byte_view message, bool tcp, 
         return out;
       }
       if (version != 1 || options != 0) {
-        out.reply = cip::encode_encap_reply(h.command, 0, status::unsupported_protocol, h.context,
+        out.reply = cip::encode_encap_reply(command_of(h), 0, status::unsupported_protocol, h.context,
                                             cip::register_session_data());
         return out;
       }
       if (l.session != 0) {  // one session per TCP connection
-        out.reply = cip::encode_encap_reply(h.command, 0, status::invalid_command, h.context,
+        out.reply = cip::encode_encap_reply(command_of(h), 0, status::invalid_command, h.context,
                                             cip::register_session_data());
         return out;
       }
       l.session = s.next_session++;
-      out.reply = cip::encode_encap_reply(h.command, l.session, 0, h.context, cip::register_session_data());
+      out.reply = cip::encode_encap_reply(command_of(h), l.session, status::success, h.context, cip::register_session_data());
       return out;
     }
     case command::unregister_session:
       if (l.session == 0 || h.session != l.session) {
-        out.reply = error_reply(h, status::invalid_session);
+        out.reply = error_reply(h, status::invalid_session_handle);
         return out;
       }
       l.session = 0;
@@ -130,7 +128,7 @@ encap_outcome handle_encap(state& s, link& l, cip::byte_view message, bool tcp, 
       return out;
     case command::send_rr_data: {
       if (l.session == 0 || h.session != l.session) {
-        out.reply = error_reply(h, status::invalid_session);
+        out.reply = error_reply(h, status::invalid_session_handle);
         return out;
       }
       auto items = command_items(data);
@@ -140,12 +138,12 @@ encap_outcome handle_encap(state& s, link& l, cip::byte_view message, bool tcp, 
         return out;
       }
       const auto answer = handle_cip(s, l, u->data, now);
-      out.reply = cip::encode_encap_reply(h.command, h.session, 0, h.context, cip::send_rr_data(answer, 0));
+      out.reply = cip::encode_encap_reply(command_of(h), h.session, status::success, h.context, cip::send_rr_data(answer, 0));
       return out;
     }
     case command::send_unit_data:
       if (l.session == 0 || h.session != l.session) {
-        out.reply = error_reply(h, status::invalid_session);
+        out.reply = error_reply(h, status::invalid_session_handle);
         return out;
       }
       out.reply = unit_data(s, l, h, data, now);

@@ -35,7 +35,6 @@ namespace {
 using cip::bytes;
 
 constexpr std::uint32_t eds_instance = 0xC8;
-constexpr std::uint8_t initiate_upload = 0x4B, upload_transfer = 0x4F;
 constexpr std::uint8_t state_loaded = 2, state_upload_initiated = 3, state_upload_in_progress = 5;
 constexpr std::uint8_t first = 0, middle = 1, last = 2, first_and_last = 4;
 
@@ -74,13 +73,13 @@ bytes get_attribute(const state& s, const cip::request& q, std::uint32_t attr) {
     case 7: cip::put_u16(d, checksum(f.content)); break;
     case 10: cip::put_u8(d, 1); break;  // read only
     case 11: cip::put_u8(d, 0); break;  // binary, not compressed
-    default: return cip::encode_reply(q.service, general::attribute_unsupported);
+    default: return cip::encode_reply(q.service, general::attribute_not_supported);
   }
-  return cip::encode_reply(q.service, 0, {}, d);
+  return cip::encode_reply(q.service, general::success, {}, d);
 }
 
 // The packet that starts at `from` under transfer number `number`.
-bytes packet(const state& s, std::uint8_t service, std::uint8_t number, std::size_t from) {
+bytes packet(const state& s, cip::service service, std::uint8_t number, std::size_t from) {
   const auto& content = s.dev.file.content;
   const auto n = std::min<std::size_t>(s.upload.transfer_size, content.size() - from);
   const bool is_first = from == 0, is_last = from + n == content.size();
@@ -90,14 +89,14 @@ bytes packet(const state& s, std::uint8_t service, std::uint8_t number, std::siz
   d.insert(d.end(), content.begin() + static_cast<std::ptrdiff_t>(from),
            content.begin() + static_cast<std::ptrdiff_t>(from + n));
   if (is_last) cip::put_u16(d, checksum(content));
-  return cip::encode_reply(service, 0, {}, d);
+  return cip::encode_reply(service, general::success, {}, d);
 }
 
 bytes transfer(state& s, const cip::request& q) {
   if (q.data.empty()) return cip::encode_reply(q.service, general::not_enough_data);
   if (q.data.size() > 1) return cip::encode_reply(q.service, general::too_much_data);
   auto& u = s.upload;
-  if (!u.active) return cip::encode_reply(q.service, general::state_conflict);
+  if (!u.active) return cip::encode_reply(q.service, general::object_state_conflict);
   const auto number = q.data[0];
   if (u.offset > 0 && number == static_cast<std::uint8_t>(u.next - 1)) return packet(s, q.service, number, u.last_offset);
   if (number != u.next || u.done) return cip::encode_reply(q.service, general::invalid_parameter);
@@ -113,25 +112,25 @@ bytes transfer(state& s, const cip::request& q) {
 }  // namespace
 
 bytes file_object(state& s, const cip::request& q, const cip::object_address& a) {
-  if (s.dev.file.content.empty()) return cip::encode_reply(q.service, general::path_unknown);
+  if (s.dev.file.content.empty()) return cip::encode_reply(q.service, general::path_destination_unknown);
   if (a.instance == 0) {  // class attributes: revision 1, max instance and number of instances
-    if (q.service != cip::service::get_attribute_single || !a.attribute) return cip::encode_reply(q.service, general::not_supported);
+    if (q.service != cip::service::get_attribute_single || !a.attribute) return cip::encode_reply(q.service, general::service_not_supported);
     bytes d;
     if (*a.attribute == 1 || *a.attribute == 3) cip::put_u16(d, 1);
     else if (*a.attribute == 2) cip::put_u16(d, eds_instance);
-    else return cip::encode_reply(q.service, general::attribute_unsupported);
-    return cip::encode_reply(q.service, 0, {}, d);
+    else return cip::encode_reply(q.service, general::attribute_not_supported);
+    return cip::encode_reply(q.service, general::success, {}, d);
   }
   if (a.instance != eds_instance) return cip::encode_reply(q.service, general::object_does_not_exist);
   switch (q.service) {
     case cip::service::get_attribute_single:
-      if (!a.attribute) return cip::encode_reply(q.service, general::not_supported);
+      if (!a.attribute) return cip::encode_reply(q.service, general::service_not_supported);
       return get_attribute(s, q, *a.attribute);
     case cip::service::set_attribute_single:
-      if (!a.attribute) return cip::encode_reply(q.service, general::not_supported);
-      return cip::encode_reply(q.service, get_attribute(s, q, *a.attribute)[2] == 0 ? general::not_settable
-                                                                                     : general::attribute_unsupported);
-    case initiate_upload: {
+      if (!a.attribute) return cip::encode_reply(q.service, general::service_not_supported);
+      return cip::encode_reply(q.service, get_attribute(s, q, *a.attribute)[2] == 0 ? general::attribute_not_settable
+                                                                                     : general::attribute_not_supported);
+    case cip::service::initiate_upload: {
       if (q.data.empty()) return cip::encode_reply(q.service, general::not_enough_data);
       if (q.data.size() > 1) return cip::encode_reply(q.service, general::too_much_data);
       if (q.data[0] == 0) return cip::encode_reply(q.service, general::invalid_parameter);
@@ -139,10 +138,10 @@ bytes file_object(state& s, const cip::request& q, const cip::object_address& a)
       bytes d;
       cip::put_u32(d, static_cast<std::uint32_t>(s.dev.file.content.size()));
       cip::put_u8(d, s.upload.transfer_size);
-      return cip::encode_reply(q.service, 0, {}, d);
+      return cip::encode_reply(q.service, general::success, {}, d);
     }
-    case upload_transfer: return transfer(s, q);
-    default: return cip::encode_reply(q.service, general::not_supported);
+    case cip::service::upload_transfer: return transfer(s, q);
+    default: return cip::encode_reply(q.service, general::service_not_supported);
   }
 }
 
