@@ -48,8 +48,18 @@ struct cpf_item_out {
 
 // RegisterSession data: protocol version 1, options 0.
 [[nodiscard]] bytes register_session_data();
-// The protocol version of a RegisterSession reply's data.
-[[nodiscard]] decoded<std::uint16_t> decode_register_session(byte_view data, std::size_t base);
+// RegisterSession data, request or reply: protocol version and options, 4
+// bytes and no more.
+struct register_session {
+  std::uint16_t version = 0, options = 0;
+};
+[[nodiscard]] decoded<register_session> decode_register_session(byte_view data, std::size_t base);
+
+// SendRRData and SendUnitData data: interface handle, timeout, then the CPF
+// items (returned).
+[[nodiscard]] decoded<std::vector<cpf_item>> decode_command_items(byte_view data, std::size_t base);
+// The first item of `type`, or null.
+[[nodiscard]] const cpf_item* find_item(const std::vector<cpf_item>& items, item type);
 
 // SendRRData data (interface handle 0, timeout, null address item,
 // unconnected data item) around a CIP request.

@@ -19,41 +19,17 @@ cip::bytes error_reply(const cip::encap_header& h, status code) {
   return cip::encap_reply_header_only(command_of(h), h.session, code, h.context);
 }
 
-// Interface handle and timeout, then the CPF items.
-cip::decoded<std::vector<cip::cpf_item>> command_items(cip::byte_view data) {
-  cip::reader r(data, cip::encap_header_size);
-  r.u32("interface handle");
-  r.u16("timeout");
-  if (!r.ok()) return r.error();
-  const auto at = r.offset();
-  return cip::decode_cpf(r.rest(), at);
-}
-
-const cip::cpf_item* find(const std::vector<cip::cpf_item>& items, cip::item type) {
-  for (const auto& it : items)
-    if (it.type == static_cast<std::uint16_t>(type)) return &it;
-  return nullptr;
-}
-
 std::optional<cip::bytes> unit_data(state& s, const link& l, const cip::encap_header& h, cip::byte_view data,
                                     clock::time_point now) {
-  auto items = command_items(data);
-  if (!items) return error_reply(h, status::incorrect_data);
-  const auto* a = find(items.value(), cip::item::connected_address);
-  const auto* d = find(items.value(), cip::item::connected_data);
-  if (a == nullptr || d == nullptr || a->data.size() != 4 || d->data.size() < 2)
-    return error_reply(h, status::incorrect_data);
-  cip::reader ra(a->data);
-  const auto id = ra.u32("connection id");
+  const auto u = cip::decode_send_unit_data(data, cip::encap_header_size);
+  if (!u) return error_reply(h, status::incorrect_data);
   open_connection* c = nullptr;
   for (auto& o : s.connections)
-    if (!o.point && o.ot_id == id) c = &o;
+    if (!o.point && o.ot_id == u->connection_id) c = &o;
   if (c == nullptr) return std::nullopt;  // no such connection: a device drops the message
-  cip::reader rd(d->data);
-  const auto sequence = rd.u16("sequence count");
   c->expires = now + c->timeout;
-  const auto answer = handle_cip(s, l, rd.rest(), now);
-  cip::bytes body = cip::send_unit_data(c->to_id, sequence, answer);
+  const auto answer = handle_cip(s, l, u->cip, now);
+  cip::bytes body = cip::send_unit_data(c->to_id, u->sequence, answer);
   return cip::encode_encap_reply(command_of(h), h.session, status::success, h.context, body);
 }
 
@@ -97,14 +73,12 @@ encap_outcome handle_encap(state& s, link& l, cip::byte_view message, bool tcp, 
   if (!tcp) return out;  // sessions and requests only over TCP; a datagram gets nothing
   switch (command_of(h)) {
     case command::register_session: {
-      cip::reader r(data);
-      const auto version = r.u16("protocol version");
-      const auto options = r.u16("options");
-      if (!r.ok() || r.remaining() != 0) {
+      const auto reg = cip::decode_register_session(data, cip::encap_header_size);
+      if (!reg) {
         out.reply = error_reply(h, status::invalid_length);
         return out;
       }
-      if (version != 1 || options != 0) {
+      if (reg->version != 1 || reg->options != 0) {
         out.reply = cip::encode_encap_reply(command_of(h), 0, status::unsupported_protocol, h.context,
                                             cip::register_session_data());
         return out;
@@ -131,9 +105,9 @@ encap_outcome handle_encap(state& s, link& l, cip::byte_view message, bool tcp, 
         out.reply = error_reply(h, status::invalid_session_handle);
         return out;
       }
-      auto items = command_items(data);
-      const auto* u = items ? find(items.value(), cip::item::unconnected_data) : nullptr;
-      if (u == nullptr || find(items.value(), cip::item::null_address) == nullptr) {
+      const auto items = cip::decode_command_items(data, cip::encap_header_size);
+      const auto* u = items ? cip::find_item(items.value(), cip::item::unconnected_data) : nullptr;
+      if (u == nullptr || cip::find_item(items.value(), cip::item::null_address) == nullptr) {
         out.reply = error_reply(h, status::incorrect_data);
         return out;
       }
