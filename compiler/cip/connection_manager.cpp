@@ -60,7 +60,7 @@ bytes encode_forward_open(const forward_open_request& fo) {
   put_u8(d, static_cast<std::uint8_t>((fo.path.size() + 1) / 2));
   put_bytes(d, fo.path);
   if (fo.path.size() % 2) put_u8(d, 0);
-  return encode_request(fo.large ? service::large_forward_open : service::forward_open, logical_path(0x06, 1), d);
+  return encode_request(fo.large ? service::large_forward_open : service::forward_open, logical_path(class_id::connection_manager, 1), d);
 }
 
 decoded<forward_open_reply> decode_forward_open_ok(byte_view data, std::size_t base) {
@@ -90,7 +90,7 @@ bytes encode_forward_close(const forward_close_request& fc) {
   put_u8(d, 0);  // reserved
   put_bytes(d, fc.path);
   if (fc.path.size() % 2) put_u8(d, 0);
-  return encode_request(service::forward_close, logical_path(0x06, 1), d);
+  return encode_request(service::forward_close, logical_path(class_id::connection_manager, 1), d);
 }
 
 decoded<forward_close_reply> decode_forward_close(byte_view data, std::size_t base) {

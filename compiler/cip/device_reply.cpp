@@ -6,21 +6,21 @@
 
 namespace edsc::cip {
 
-bytes encode_encap_reply(std::uint16_t cmd, std::uint32_t session, std::uint32_t status,
+bytes encode_encap_reply(command cmd, std::uint32_t session, encap_status status,
                          const sender_context& context, byte_view data) {
   bytes b;
   b.reserve(encap_header_size + data.size());
-  put_u16(b, cmd);
+  put_u16(b, code(cmd));
   put_u16(b, static_cast<std::uint16_t>(data.size()));
   put_u32(b, session);
-  put_u32(b, status);
+  put_u32(b, code(status));
   put_bytes(b, context);
   put_u32(b, 0);
   put_bytes(b, data);
   return b;
 }
 
-bytes encap_reply_header_only(std::uint16_t cmd, std::uint32_t session, std::uint32_t status,
+bytes encap_reply_header_only(command cmd, std::uint32_t session, encap_status status,
                               const sender_context& context) {
   return encode_encap_reply(cmd, session, status, context, {});
 }
@@ -63,12 +63,12 @@ bytes list_services_reply() {
   return encode_cpf({{item::list_services, s}});
 }
 
-bytes encode_reply(std::uint8_t request_service, std::uint8_t general, std::span<const std::uint16_t> additional,
+bytes encode_reply(service request_service, general_status general, std::span<const std::uint16_t> additional,
                    byte_view data) {
   bytes b;
-  put_u8(b, static_cast<std::uint8_t>(request_service | 0x80));
+  put_u8(b, static_cast<std::uint8_t>(code(request_service) | reply_bit));
   put_u8(b, 0);
-  put_u8(b, general);
+  put_u8(b, code(general));
   put_u8(b, static_cast<std::uint8_t>(additional.size()));
   for (const auto w : additional) put_u16(b, w);
   put_bytes(b, data);

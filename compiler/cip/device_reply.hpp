@@ -13,10 +13,10 @@
 namespace edsc::cip {
 
 // A reply header with `status` (requests always carry 0).
-[[nodiscard]] bytes encode_encap_reply(std::uint16_t cmd, std::uint32_t session, std::uint32_t status,
+[[nodiscard]] bytes encode_encap_reply(command cmd, std::uint32_t session, encap_status status,
                                        const sender_context& context, byte_view data);
 // An error reply: the header alone, with `status`.
-[[nodiscard]] bytes encap_reply_header_only(std::uint16_t cmd, std::uint32_t session, std::uint32_t status,
+[[nodiscard]] bytes encap_reply_header_only(command cmd, std::uint32_t session, encap_status status,
                                             const sender_context& context);
 
 // Identity attributes 1-7 in wire order, then the state (attribute 8).
@@ -27,7 +27,7 @@ void put_identity_fields(bytes& b, const identity& id);
 [[nodiscard]] bytes list_services_reply();
 
 // Reply service (request | 0x80), reserved, general status, additional status words, data.
-[[nodiscard]] bytes encode_reply(std::uint8_t request_service, std::uint8_t general,
+[[nodiscard]] bytes encode_reply(service request_service, general_status general,
                                  std::span<const std::uint16_t> additional = {}, byte_view data = {});
 
 [[nodiscard]] bytes forward_open_ok_data(const forward_open_reply& r);

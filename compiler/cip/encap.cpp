@@ -83,12 +83,14 @@ bytes register_session_data() {
   return b;
 }
 
-decoded<std::uint16_t> decode_register_session(byte_view data, std::size_t base) {
+decoded<register_session> decode_register_session(byte_view data, std::size_t base) {
   reader r(data, base);
-  const auto version = r.u16("RegisterSession protocol version");
-  r.u16("RegisterSession options");
+  register_session reg;
+  reg.version = r.u16("RegisterSession protocol version");
+  reg.options = r.u16("RegisterSession options");
   if (!r.ok()) return r.error();
-  return version;
+  if (r.remaining() != 0) return r.fail(plural(r.remaining(), "byte") + " after the RegisterSession options");
+  return reg;
 }
 
 bytes send_rr_data(byte_view cip_request, std::uint16_t timeout_s) {
@@ -99,19 +101,12 @@ bytes send_rr_data(byte_view cip_request, std::uint16_t timeout_s) {
   return b;
 }
 
-namespace {
-
 const cpf_item* find_item(const std::vector<cpf_item>& items, item type) {
   for (const auto& it : items)
-    if (it.type == static_cast<std::uint16_t>(type)) return &it;
+    if (it.type == code(type)) return &it;
   return nullptr;
 }
 
-}  // namespace
-
-namespace {
-
-// SendRRData and SendUnitData data: interface handle, timeout, CPF items.
 decoded<std::vector<cpf_item>> decode_command_items(byte_view data, std::size_t base) {
   reader r(data, base);
   r.u32("interface handle");
@@ -120,8 +115,6 @@ decoded<std::vector<cpf_item>> decode_command_items(byte_view data, std::size_t 
   const auto at = r.offset();
   return decode_cpf(r.rest(), at);
 }
-
-}  // namespace
 
 decoded<byte_view> decode_send_rr_data(byte_view data, std::size_t base) {
   auto items = decode_command_items(data, base);
@@ -149,6 +142,8 @@ decoded<unit_data> decode_send_unit_data(byte_view data, std::size_t base) {
   const auto* a = find_item(items.value(), item::connected_address);
   const auto* d = find_item(items.value(), item::connected_data);
   if (!a || !d) return decode_error{base + 6, "SendUnitData without a connected address and a connected data item"};
+  if (a->data.size() != 4)
+    return decode_error{a->offset, fmt::format("a connected address item of {}; 4 expected", plural(a->data.size(), "byte"))};
   unit_data u;
   reader ra(a->data, a->offset);
   u.connection_id = ra.u32("connection id");

@@ -8,35 +8,13 @@
 #include <vector>
 
 #include "cip/bytes.hpp"
+#include "cip/codes.hpp"
 
 namespace edsc::cip {
 
 inline constexpr std::uint16_t enip_port = 44818;
 inline constexpr std::uint16_t io_port = 2222;
 inline constexpr std::size_t encap_header_size = 24;
-
-enum class command : std::uint16_t {
-  nop = 0x0000,
-  list_services = 0x0004,
-  list_identity = 0x0063,
-  list_interfaces = 0x0064,
-  register_session = 0x0065,
-  unregister_session = 0x0066,
-  send_rr_data = 0x006F,
-  send_unit_data = 0x0070,
-};
-
-enum class item : std::uint16_t {
-  null_address = 0x0000,
-  list_identity = 0x000C,
-  connected_address = 0x00A1,
-  connected_data = 0x00B1,
-  unconnected_data = 0x00B2,
-  list_services = 0x0100,
-  sockaddr_ot = 0x8000,
-  sockaddr_to = 0x8001,
-  sequenced_address = 0x8002,
-};
 
 using sender_context = std::array<std::uint8_t, 8>;
 
@@ -70,8 +48,18 @@ struct cpf_item_out {
 
 // RegisterSession data: protocol version 1, options 0.
 [[nodiscard]] bytes register_session_data();
-// The protocol version of a RegisterSession reply's data.
-[[nodiscard]] decoded<std::uint16_t> decode_register_session(byte_view data, std::size_t base);
+// RegisterSession data, request or reply: protocol version and options, 4
+// bytes and no more.
+struct register_session {
+  std::uint16_t version = 0, options = 0;
+};
+[[nodiscard]] decoded<register_session> decode_register_session(byte_view data, std::size_t base);
+
+// SendRRData and SendUnitData data: interface handle, timeout, then the CPF
+// items (returned).
+[[nodiscard]] decoded<std::vector<cpf_item>> decode_command_items(byte_view data, std::size_t base);
+// The first item of `type`, or null.
+[[nodiscard]] const cpf_item* find_item(const std::vector<cpf_item>& items, item type);
 
 // SendRRData data (interface handle 0, timeout, null address item,
 // unconnected data item) around a CIP request.

@@ -36,9 +36,9 @@ bytes logical_path(std::uint32_t class_id, std::uint32_t instance, std::optional
   return p;
 }
 
-bytes encode_request(std::uint8_t service, byte_view path, byte_view data) {
+bytes encode_request(service s, byte_view path, byte_view data) {
   bytes b;
-  put_u8(b, service);
+  put_u8(b, code(s));
   put_u8(b, static_cast<std::uint8_t>((path.size() + 1) / 2));
   put_bytes(b, path);
   if (path.size() % 2) put_u8(b, 0);
@@ -55,7 +55,7 @@ decoded<reply> decode_reply(byte_view b, std::size_t base) {
   const auto words = r.u8("additional status size");
   for (unsigned i = 0; i < words && r.ok(); ++i) rep.additional.push_back(r.u16("additional status"));
   if (!r.ok()) return r.error();
-  if (!(rep.service & service::reply_bit))
+  if (!(rep.service & reply_bit))
     return decode_error{base, fmt::format("service 0x{:02X} is a request, not a reply", rep.service)};
   const auto rest = r.rest();
   rep.data.assign(rest.begin(), rest.end());

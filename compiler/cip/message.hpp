@@ -6,20 +6,10 @@
 #include <vector>
 
 #include "cip/bytes.hpp"
+#include "cip/codes.hpp"
 #include "cip/encap.hpp"
 
 namespace edsc::cip {
-
-namespace service {
-inline constexpr std::uint8_t get_attributes_all = 0x01;
-inline constexpr std::uint8_t get_attribute_single = 0x0E;
-inline constexpr std::uint8_t set_attribute_single = 0x10;
-inline constexpr std::uint8_t forward_close = 0x4E;
-inline constexpr std::uint8_t unconnected_send = 0x52;
-inline constexpr std::uint8_t forward_open = 0x54;
-inline constexpr std::uint8_t large_forward_open = 0x5B;
-inline constexpr std::uint8_t reply_bit = 0x80;
-}  // namespace service
 
 // Logical segments, 8-bit when the value fits, else 16-bit with a pad byte.
 void put_class(bytes& path, std::uint32_t class_id);
@@ -27,15 +17,26 @@ void put_instance(bytes& path, std::uint32_t instance);
 void put_attribute(bytes& path, std::uint32_t attribute);
 [[nodiscard]] bytes logical_path(std::uint32_t class_id, std::uint32_t instance,
                                  std::optional<std::uint32_t> attribute = std::nullopt);
+[[nodiscard]] inline bytes logical_path(class_id c, std::uint32_t instance,
+                                        std::optional<std::uint32_t> attribute = std::nullopt) {
+  return logical_path(code(c), instance, attribute);
+}
 
 // Service, path size in words, path (padded to words by the caller), data.
-[[nodiscard]] bytes encode_request(std::uint8_t service, byte_view path, byte_view data = {});
+[[nodiscard]] bytes encode_request(service s, byte_view path, byte_view data = {});
+// The same with any service byte, one codes.def lacks included (what a
+// hostile or unusual originator sends).
+[[nodiscard]] inline bytes encode_request(std::uint8_t s, byte_view path, byte_view data = {}) {
+  return encode_request(service{s}, path, data);
+}
 
 struct reply {
   std::uint8_t service = 0;  // with the reply bit
   std::uint8_t general = 0;
   std::vector<std::uint16_t> additional;
   bytes data;
+
+  [[nodiscard]] bool is(general_status s) const { return general == code(s); }
 };
 [[nodiscard]] decoded<reply> decode_reply(byte_view b, std::size_t base);
 

@@ -7,12 +7,12 @@ namespace edsc::cip {
 decoded<request> decode_request(byte_view b, std::size_t base) {
   reader r(b, base);
   request q;
-  q.service = r.u8("request service");
+  q.service = static_cast<service>(r.u8("request service"));
   const auto words = r.u8("request path size");
   q.path = r.take(words * 2u, "request path");
   if (!r.ok()) return r.error();
-  if (q.service & service::reply_bit)
-    return decode_error{base, fmt::format("service 0x{:02X} is a reply, not a request", q.service)};
+  if (code(q.service) & reply_bit)
+    return decode_error{base, fmt::format("service 0x{:02X} is a reply, not a request", code(q.service))};
   q.data = r.rest();
   return q;
 }

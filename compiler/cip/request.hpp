@@ -8,12 +8,13 @@
 #include <vector>
 
 #include "cip/bytes.hpp"
+#include "cip/codes.hpp"
 #include "cip/connection_manager.hpp"
 
 namespace edsc::cip {
 
 struct request {
-  std::uint8_t service = 0;
+  cip::service service{};  // as read: a code codes.def may lack
   byte_view path;  // padded to words, as sent
   byte_view data;
 };

@@ -47,7 +47,7 @@ result<probe_result> probe(const endpoint& device, const probe_options& opt) {
   if (auto* e = failed(services)) return *e;
   out.services = std::get<std::vector<cip::service_info>>(services);
   // Assembly class attribute 2, Max Instance, bounds the scan.
-  auto max = s.request(cip::service::get_attribute_single, cip::logical_path(0x04, 0, 2));
+  auto max = s.request(cip::service::get_attribute_single, cip::logical_path(cip::class_id::assembly, 0, 2));
   if (auto* e = failed(max)) return *e;
   std::vector<std::uint32_t> instances = opt.extra_instances;
   if (const auto& rep = std::get<cip::reply>(max); rep.general == 0 && rep.data.size() >= 2) {
@@ -63,7 +63,7 @@ result<probe_result> probe(const endpoint& device, const probe_options& opt) {
   std::sort(instances.begin(), instances.end());
   instances.erase(std::unique(instances.begin(), instances.end()), instances.end());
   for (const auto i : instances) {
-    auto r = s.request(cip::service::get_attribute_single, cip::logical_path(0x04, i, 4));
+    auto r = s.request(cip::service::get_attribute_single, cip::logical_path(cip::class_id::assembly, i, 4));
     if (auto* e = failed(r)) return *e;
     const auto& rep = std::get<cip::reply>(r);
     if (rep.general == 0 && rep.data.size() >= 2)

@@ -15,17 +15,8 @@ namespace edsc::live {
 namespace {
 
 std::string command_name(std::uint16_t c) {
-  switch (static_cast<cip::command>(c)) {
-    case cip::command::nop: return "NOP";
-    case cip::command::list_services: return "ListServices";
-    case cip::command::list_identity: return "ListIdentity";
-    case cip::command::list_interfaces: return "ListInterfaces";
-    case cip::command::register_session: return "RegisterSession";
-    case cip::command::unregister_session: return "UnRegisterSession";
-    case cip::command::send_rr_data: return "SendRRData";
-    case cip::command::send_unit_data: return "SendUnitData";
-  }
-  return fmt::format("0x{:04X}", c);
+  const auto name = cip::name_of(static_cast<cip::command>(c));
+  return name.empty() ? fmt::format("0x{:04X}", c) : std::string(name);
 }
 
 std::string malformed(std::string_view what, const cip::decode_error& e) {
@@ -97,7 +88,7 @@ result<cip::bytes> session::exchange(cip::command cmd, cip::byte_view data, bool
     return net_error{fmt::format("the device's {} does not echo our sender context: a reply to another request",
                                  body_what)};
   if (h->status != 0) {
-    const auto text = cip::encap_status_text(h->status);
+    const auto text = cip::words_of(cip::encap_status{h->status});
     return net_error{fmt::format("the device refused {} with encapsulation status 0x{:04X} {}",
                                  command_name(static_cast<std::uint16_t>(cmd)), h->status,
                                  text.empty() ? "(unknown code)" : text)};
@@ -128,11 +119,11 @@ result<std::vector<cip::service_info>> session::list_services() {
   return services.value();
 }
 
-result<cip::reply> session::request(std::uint8_t service, cip::byte_view path, cip::byte_view data) {
+result<cip::reply> session::request(cip::service service, cip::byte_view path, cip::byte_view data) {
   return request_raw(service, cip::encode_request(service, path, data));
 }
 
-result<cip::reply> session::request_raw(std::uint8_t service, cip::byte_view cip_request) {
+result<cip::reply> session::request_raw(cip::service service, cip::byte_view cip_request) {
   const auto timeout_s = static_cast<std::uint16_t>(std::max<long long>(1, timeout_.count() / 1000));
   auto reply = exchange(cip::command::send_rr_data, cip::send_rr_data(cip_request, timeout_s));
   if (auto* e = failed(reply)) return *e;
@@ -142,17 +133,17 @@ result<cip::reply> session::request_raw(std::uint8_t service, cip::byte_view cip
   const auto at = static_cast<std::size_t>(item.value().data() - body.data()) + cip::encap_header_size;
   auto rep = cip::decode_reply(item.value(), at);
   if (!rep) return net_error{malformed("CIP reply", rep.error())};
-  if (rep->service != (service | cip::service::reply_bit))
+  if (rep->service != (cip::code(service) | cip::reply_bit))
     return net_error{fmt::format("the device replied to service 0x{:02X} when asked for service 0x{:02X}",
-                                 rep->service & 0x7F, service)};
+                                 rep->service & 0x7F, cip::code(service))};
   return std::move(rep.value());
 }
 
 result<cip::identity> read_identity(session& s) {
-  auto all = s.request(cip::service::get_attributes_all, cip::logical_path(0x01, 1));
+  auto all = s.request(cip::service::get_attributes_all, cip::logical_path(cip::class_id::identity, 1));
   if (auto* e = failed(all)) return *e;
   const auto& rep = std::get<cip::reply>(all);
-  if (rep.general != 0) return s.list_identity();
+  if (!rep.is(cip::general_status::success)) return s.list_identity();
   auto d = cip::decode_identity_all(rep.data, 0);
   if (!d) return net_error{malformed("Identity reply", d.error())};
   return d.value();

@@ -25,9 +25,9 @@ class session {
   [[nodiscard]] result<cip::identity> list_identity();
   [[nodiscard]] result<std::vector<cip::service_info>> list_services();
   // One unconnected explicit request; the reply's service is checked.
-  [[nodiscard]] result<cip::reply> request(std::uint8_t service, cip::byte_view path, cip::byte_view data = {});
+  [[nodiscard]] result<cip::reply> request(cip::service service, cip::byte_view path, cip::byte_view data = {});
   // A CIP request already encoded (Forward_Open), its service given for the check.
-  [[nodiscard]] result<cip::reply> request_raw(std::uint8_t service, cip::byte_view cip_request);
+  [[nodiscard]] result<cip::reply> request_raw(cip::service service, cip::byte_view cip_request);
 
   [[nodiscard]] const sockaddr_in& local() const { return local_; }
   [[nodiscard]] const endpoint& peer() const { return peer_; }

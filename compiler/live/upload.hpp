@@ -2,15 +2,17 @@
 // "Upload EDS from device": the file a device keeps in its File object
 // (class 0x37, instance 0xC8 by convention), read by Initiate_Upload and
 // Upload_Transfer as a configuration tool does. The facts and what is
-// unconfirmed about them: compiler/sim/file_object.cpp and docs/sim.md.
+// unconfirmed about them: compiler/sim/file_object.cpp and docs/sim.md; the
+// wire format: cip/file_transfer.hpp.
 #include <cstdint>
 
 #include "cip/bytes.hpp"
+#include "cip/file_transfer.hpp"
 #include "live/session.hpp"
 
 namespace edsc::live {
 
-inline constexpr std::uint32_t eds_file_instance = 0xC8;
+using cip::eds_file_instance;
 
 // The whole file, its checksum checked; a refusal or a broken transfer is a
 // net_error in words.

@@ -18,6 +18,7 @@ namespace edsc::live {
 namespace {
 
 using model::value;
+using extended = cip::extended_status;
 
 // Where a finding points: the field when it is written, else the entity.
 span at(const value& v, const model::origin& fallback) {
@@ -114,9 +115,9 @@ struct checker {
   std::optional<bool> assembly_class;
   result<bool> assembly_class_answers(session& s) {
     if (!assembly_class) {
-      auto r = s.request(cip::service::get_attribute_single, cip::logical_path(0x04, 0, 2));
+      auto r = s.request(cip::service::get_attribute_single, cip::logical_path(cip::class_id::assembly, 0, 2));
       if (auto* e = failed(r)) return *e;
-      assembly_class = std::get<cip::reply>(r).general == 0;
+      assembly_class = std::get<cip::reply>(r).is(cip::general_status::success);
     }
     return *assembly_class;
   }
@@ -129,12 +130,12 @@ struct checker {
       const auto check = fmt::format("{} size (instance {})", assem_name(*t.assem), t.instance);
       if (halted(check, std::to_string(t.eds_size))) continue;
       step(fmt::format("reading the size of assembly instance {} ({} of {})", t.instance, i + 1, targets.size()));
-      auto r = s.request(cip::service::get_attribute_single, cip::logical_path(0x04, t.instance, 4));
+      auto r = s.request(cip::service::get_attribute_single, cip::logical_path(cip::class_id::assembly, t.instance, 4));
       if (auto* e = failed(r)) return lost(*e, check, std::to_string(t.eds_size));
       const auto& rep = std::get<cip::reply>(r);
       const auto where = at(t.assem->size, t.assem->from);
-      // 0x05 path destination unknown (OpENer's answer), 0x16 object does not exist.
-      if (rep.general == 0x05 || rep.general == 0x16) {
+      // Path destination unknown is OpENer's answer.
+      if (rep.is(cip::general_status::path_destination_unknown) || rep.is(cip::general_status::object_does_not_exist)) {
         auto known = assembly_class_answers(s);
         if (auto* e = failed(known)) return lost(*e, check, std::to_string(t.eds_size));
         if (std::get<bool>(known)) {
@@ -169,17 +170,17 @@ struct checker {
   // format (the assembly reference) or the path, else the entry.
   span refusal_site(const connection_plan& p, std::uint16_t ext) {
     const auto& c = *p.conn;
-    switch (ext) {
-      case 0x0127: return at(c.ot_size, model::origin{0, at(c.ot_format, c.from)});
-      case 0x0128: return at(c.to_size, model::origin{0, at(c.to_format, c.from)});
-      case 0x0126:
-      case 0x0129: return at(c.target_config_size, model::origin{0, at(c.target_config_format, at_path(c))});
-      case 0x0111:
-      case 0x0112: return at(c.ot_rpi, c.from);
-      case 0x0114:
-        return at(dev.identity.prod_code, c.from);
-      case 0x0115: return at(dev.identity.prod_type, c.from);
-      case 0x0116: {
+    switch (extended{ext}) {
+      case extended::invalid_ot_size: return at(c.ot_size, model::origin{0, at(c.ot_format, c.from)});
+      case extended::invalid_to_size: return at(c.to_size, model::origin{0, at(c.to_format, c.from)});
+      case extended::invalid_configuration_size:
+      case extended::invalid_configuration_application_path:
+        return at(c.target_config_size, model::origin{0, at(c.target_config_format, at_path(c))});
+      case extended::rpi_not_supported:
+      case extended::rpi_not_acceptable: return at(c.ot_rpi, c.from);
+      case extended::vendor_or_product_code_mismatch: return at(dev.identity.prod_code, c.from);
+      case extended::device_type_mismatch: return at(dev.identity.prod_type, c.from);
+      case extended::revision_mismatch: {
         // The revision field that differs: the minor one when the majors agree.
         const auto& d = dev.identity;
         const bool minor_only = device_id && d.maj_rev.is_integer() && d.maj_rev.as_uint() == device_id->major;
@@ -192,22 +193,23 @@ struct checker {
 
   std::string refusal_words(const connection_plan& p, const connection_outcome& o) {
     const auto status = cip::describe_status(o.general, o.additional);
-    if (o.general != 0x01 || o.additional.empty()) return status;
-    const auto ext = o.additional[0];
+    if (o.general != cip::code(cip::general_status::connection_failure) || o.additional.empty()) return status;
+    const extended ext{o.additional[0]};
     const bool has_size = o.additional.size() >= 2;
     const unsigned accepted = has_size ? o.additional[1] : 0;
-    if (ext == 0x0127 && has_size)
+    if (ext == extended::invalid_ot_size && has_size)
       return fmt::format("{}: the device accepts {} O->T, the EDS says {} ({}{})", status, plural(accepted, "byte"),
                          p.request.ot.size, plural(p.facts.output_size, "data byte"),
                          p.ot_run_idle ? " + 2 sequence + 4 run/idle" : " + 2 sequence");
-    if (ext == 0x0128 && has_size)
+    if (ext == extended::invalid_to_size && has_size)
       return fmt::format("{}: the device accepts {} T->O, the EDS says {} ({}{})", status, plural(accepted, "byte"),
                          p.request.to.size, plural(p.facts.input_size, "data byte"),
                          p.to_run_idle ? " + 2 sequence + 4 run/idle" : " + 2 sequence");
-    if (ext == 0x0126 || ext == 0x0129)
+    if (ext == extended::invalid_configuration_size || ext == extended::invalid_configuration_application_path)
       return fmt::format("{}: refused the {} bytes of configuration the EDS gives instance {}", status,
                          p.facts.config_size, p.facts.config_instance);
-    if (ext == 0x012F || ext == 0x012A || ext == 0x012B || ext == 0x0117)
+    if (ext == extended::inconsistent_path_combination || ext == extended::invalid_consuming_path ||
+        ext == extended::invalid_producing_path || ext == extended::invalid_application_path)
       return fmt::format("{}: the path names O->T instance {}, T->O instance {}, configuration instance {}", status,
                          p.facts.output_instance, p.facts.input_instance, p.facts.config_instance);
     return status;
@@ -216,11 +218,11 @@ struct checker {
   // A refusal that is the device's state, not the EDS's fault: another
   // scanner holds what the connection needs.
   static const char* busy_reason(std::uint8_t general, std::uint16_t ext) {
-    if (general != 0x01) return nullptr;
-    switch (ext) {
-      case 0x0100: return "a connection with the same identity is already open";
-      case 0x0106: return "another scanner owns what it connects to";
-      case 0x0113: return "the device has no connection free";
+    if (general != cip::code(cip::general_status::connection_failure)) return nullptr;
+    switch (extended{ext}) {
+      case extended::connection_in_use: return "a connection with the same identity is already open";
+      case extended::ownership_conflict: return "another scanner owns what it connects to";
+      case extended::out_of_connections: return "the device has no connection free";
       default: return nullptr;
     }
   }
@@ -245,7 +247,8 @@ struct checker {
       const auto o = exercise_connection(s, p, ++serial, window);
       if (!o.opened) {
         if (o.failure) return lost(*o.failure, name, sizes);
-        const auto ext = o.general == 0x01 && !o.additional.empty() ? o.additional[0] : 0;
+        const std::uint16_t ext =
+            o.general == cip::code(cip::general_status::connection_failure) && !o.additional.empty() ? o.additional[0] : 0;
         if (const auto* why = busy_reason(o.general, ext)) {
           row(name, sizes, fmt::format("busy 0x{:02X}/0x{:04X}", o.general, ext), verdict::not_tried);
           out.rows.back().refused = std::pair<int, int>{o.general, ext};

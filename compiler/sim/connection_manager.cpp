@@ -22,13 +22,13 @@ using cip::bytes;
 // connection it was held against, the reason in words).
 bytes refuse(state& s, const cip::request& q, const cip::forward_open_request& fo, const refusal& r,
              std::uint32_t connection = 0) {
-  std::vector<std::uint16_t> add{r.status};
+  std::vector<std::uint16_t> add{cip::code(r.status)};
   add.insert(add.end(), r.additional.begin(), r.additional.end());
   log_event(s, "refused",
             fmt::format("\"serial\":{},\"originator_vendor\":{},\"originator_serial\":{},\"connection\":{},"
                         "\"status\":\"0x{:02X}\",\"extended\":\"0x{:04X}\",\"why\":{}",
                         fo.connection_serial, fo.originator_vendor, fo.originator_serial, connection,
-                        general::connection_failure, r.status, nlohmann::json(r.why).dump()));
+                        cip::code(general::connection_failure), cip::code(r.status), nlohmann::json(r.why).dump()));
   return cip::encode_reply(q.service, general::connection_failure, add,
                            cip::connection_triple_data(fo.connection_serial, fo.originator_vendor, fo.originator_serial));
 }
@@ -43,7 +43,7 @@ bytes forward_open(state& s, const link& l, const cip::request& q, clock::time_p
   auto parsed = cip::decode_forward_open(q.data, large, 0);
   if (!parsed) {
     log_event(s, "refused",
-              fmt::format("\"status\":\"0x{:02X}\",\"why\":{}", general::not_enough_data,
+              fmt::format("\"status\":\"0x{:02X}\",\"why\":{}", cip::code(general::not_enough_data),
                           nlohmann::json("the Forward_Open cannot be read: " + parsed.error().what).dump()));
     return cip::encode_reply(q.service, general::not_enough_data);
   }
@@ -52,11 +52,11 @@ bytes forward_open(state& s, const link& l, const cip::request& q, clock::time_p
     if (o.serial == fo.connection_serial && o.vendor == fo.originator_vendor &&
         o.originator_serial == fo.originator_serial)
       return refuse(s, q, fo,
-                    {ext::in_use, {},
+                    {ext::connection_in_use, {},
                      fmt::format("a connection of serial {}, originator vendor {} and serial {} is already open",
                                  fo.connection_serial, fo.originator_vendor, fo.originator_serial)});
   auto segs = cip::decode_path(fo.path, 0);
-  if (!segs) return refuse(s, q, fo, {ext::bad_segment, {}, "the connection path: " + segs.error().what});
+  if (!segs) return refuse(s, q, fo, {ext::invalid_segment_in_path, {}, "the connection path: " + segs.error().what});
   std::vector<cip::path_segment> app;
   std::optional<cip::byte_view> config;
   for (const auto& sg : segs.value()) {
@@ -90,7 +90,7 @@ bytes forward_open(state& s, const link& l, const cip::request& q, clock::time_p
     const std::vector<cip::path_segment> router{router_class, router_instance};
     if (app != router)
       return refuse(s, q, fo,
-                    {ext::inconsistent_path, {},
+                    {ext::inconsistent_path_combination, {},
                      "a class 3 connection goes to the Message Router (class 2, instance 1), not to " + path_words(app)});
     if (s.connections.size() >= s.max_connections)
       return refuse(s, q, fo,
@@ -102,7 +102,7 @@ bytes forward_open(state& s, const link& l, const cip::request& q, clock::time_p
     oc.expires = now + oc.timeout;
   } else if (transport_class != 1) {
     return refuse(s, q, fo,
-                  {ext::transport_class, {},
+                  {ext::transport_class_not_supported, {},
                    fmt::format("transport class {} asked; the simulator serves classes 1 and 3", transport_class)});
   } else {
     std::optional<refusal> first;
@@ -119,7 +119,7 @@ bytes forward_open(state& s, const link& l, const cip::request& q, clock::time_p
     }
     if (!chosen)
       return first ? refuse(s, q, fo, *first, first_number)
-                   : refuse(s, q, fo, {ext::inconsistent_path, {}, "no ConnectionN has the application path " + path_words(app)});
+                   : refuse(s, q, fo, {ext::inconsistent_path_combination, {}, "no ConnectionN has the application path " + path_words(app)});
     const auto& p = s.dev.points[*chosen];
     oc.point = chosen;
     oc.consumes = fo.ot.type != cip::conn_type::null;
@@ -149,7 +149,7 @@ bytes forward_open(state& s, const link& l, const cip::request& q, clock::time_p
             fmt::format("{},\"connection\":{},\"class\":{},\"ot_rpi_us\":{},\"to_rpi_us\":{}", triple(fo),
                         oc.point ? s.dev.points[*oc.point].number : 0, transport_class, fo.ot_rpi_us, fo.to_rpi_us));
   s.connections.push_back(oc);
-  return cip::encode_reply(q.service, 0, {}, cip::forward_open_ok_data(rep));
+  return cip::encode_reply(q.service, general::success, {}, cip::forward_open_ok_data(rep));
 }
 
 bytes forward_close(state& s, const cip::request& q) {
@@ -161,7 +161,7 @@ bytes forward_close(state& s, const cip::request& q) {
            o.originator_serial == fc.originator_serial;
   });
   if (it == s.connections.end()) {
-    const std::uint16_t add[] = {ext::not_found};
+    const std::uint16_t add[] = {cip::code(ext::connection_not_found)};
     return cip::encode_reply(q.service, general::connection_failure, add,
                              cip::connection_triple_data(fc.connection_serial, fc.originator_vendor, fc.originator_serial));
   }
@@ -170,19 +170,19 @@ bytes forward_close(state& s, const cip::request& q) {
                                     it->consumed));
   s.connections.erase(it);
   close_orphans(s);
-  return cip::encode_reply(q.service, 0, {}, cip::connection_triple_data(fc.connection_serial, fc.originator_vendor, fc.originator_serial));
+  return cip::encode_reply(q.service, general::success, {}, cip::connection_triple_data(fc.connection_serial, fc.originator_vendor, fc.originator_serial));
 }
 
 }  // namespace
 
 bytes connection_manager(state& s, const link& l, const cip::request& q, const cip::object_address& a,
                          clock::time_point now) {
-  if (a.instance != 1 || a.attribute) return cip::encode_reply(q.service, general::path_unknown);
+  if (a.instance != 1 || a.attribute) return cip::encode_reply(q.service, general::path_destination_unknown);
   switch (q.service) {
     case cip::service::forward_open:
     case cip::service::large_forward_open: return forward_open(s, l, q, now);
     case cip::service::forward_close: return forward_close(s, q);
-    default: return cip::encode_reply(q.service, general::not_supported);
+    default: return cip::encode_reply(q.service, general::service_not_supported);
   }
 }
 

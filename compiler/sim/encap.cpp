@@ -1,7 +1,6 @@
 // The encapsulation layer of the simulated device: list commands, sessions,
 // SendRRData and SendUnitData, and the statuses ETHERNETIP_LIVE.md §3 lists
-// for what is wrong (invalid command 0x0001, incorrect data 0x0003, invalid
-// session handle 0x0064, invalid length 0x0065, unsupported protocol 0x0069).
+// for what is wrong (cip::encap_status).
 #include <cstring>
 
 #include "cip/device_reply.hpp"
@@ -12,51 +11,26 @@ namespace edsc::sim {
 
 namespace {
 
-namespace status {
-constexpr std::uint32_t invalid_command = 0x0001, incorrect_data = 0x0003, invalid_session = 0x0064,
-                        invalid_length = 0x0065, unsupported_protocol = 0x0069;
-}
+using status = cip::encap_status;
 
-cip::bytes error_reply(const cip::encap_header& h, std::uint32_t code) {
-  return cip::encap_reply_header_only(h.command, h.session, code, h.context);
-}
+cip::command command_of(const cip::encap_header& h) { return static_cast<cip::command>(h.command); }
 
-// Interface handle and timeout, then the CPF items.
-cip::decoded<std::vector<cip::cpf_item>> command_items(cip::byte_view data) {
-  cip::reader r(data, cip::encap_header_size);
-  r.u32("interface handle");
-  r.u16("timeout");
-  if (!r.ok()) return r.error();
-  const auto at = r.offset();
-  return cip::decode_cpf(r.rest(), at);
-}
-
-const cip::cpf_item* find(const std::vector<cip::cpf_item>& items, cip::item type) {
-  for (const auto& it : items)
-    if (it.type == static_cast<std::uint16_t>(type)) return &it;
-  return nullptr;
+cip::bytes error_reply(const cip::encap_header& h, status code) {
+  return cip::encap_reply_header_only(command_of(h), h.session, code, h.context);
 }
 
 std::optional<cip::bytes> unit_data(state& s, const link& l, const cip::encap_header& h, cip::byte_view data,
                                     clock::time_point now) {
-  auto items = command_items(data);
-  if (!items) return error_reply(h, status::incorrect_data);
-  const auto* a = find(items.value(), cip::item::connected_address);
-  const auto* d = find(items.value(), cip::item::connected_data);
-  if (a == nullptr || d == nullptr || a->data.size() != 4 || d->data.size() < 2)
-    return error_reply(h, status::incorrect_data);
-  cip::reader ra(a->data);
-  const auto id = ra.u32("connection id");
+  const auto u = cip::decode_send_unit_data(data, cip::encap_header_size);
+  if (!u) return error_reply(h, status::incorrect_data);
   open_connection* c = nullptr;
   for (auto& o : s.connections)
-    if (!o.point && o.ot_id == id) c = &o;
+    if (!o.point && o.ot_id == u->connection_id) c = &o;
   if (c == nullptr) return std::nullopt;  // no such connection: a device drops the message
-  cip::reader rd(d->data);
-  const auto sequence = rd.u16("sequence count");
   c->expires = now + c->timeout;
-  const auto answer = handle_cip(s, l, rd.rest(), now);
-  cip::bytes body = cip::send_unit_data(c->to_id, sequence, answer);
-  return cip::encode_encap_reply(h.command, h.session, 0, h.context, body);
+  const auto answer = handle_cip(s, l, u->cip, now);
+  cip::bytes body = cip::send_unit_data(c->to_id, u->sequence, answer);
+  return cip::encode_encap_reply(command_of(h), h.session, status::success, h.context, body);
 }
 
 }  // namespace
@@ -76,53 +50,51 @@ encap_outcome handle_encap(state& s, link& l, cip::byte_view message, bool tcp, 
     return out;
   }
   using cip::command;
-  switch (static_cast<command>(h.command)) {
+  switch (command_of(h)) {
     case command::nop: return out;  // never answered
     case command::list_identity: {
       auto id = s.dev.id;
       id.status = device_status(s);
       std::memcpy(id.sin_addr.data(), &l.local_ip, 4);  // both in network order
-      out.reply = cip::encode_encap_reply(h.command, 0, 0, h.context, cip::list_identity_reply(id));
+      out.reply = cip::encode_encap_reply(command_of(h), 0, status::success, h.context, cip::list_identity_reply(id));
       return out;
     }
     case command::list_services:
-      out.reply = cip::encode_encap_reply(h.command, 0, 0, h.context, cip::list_services_reply());
+      out.reply = cip::encode_encap_reply(command_of(h), 0, status::success, h.context, cip::list_services_reply());
       return out;
     case command::list_interfaces: {
       cip::bytes none;
       cip::put_u16(none, 0);  // no interface items
-      out.reply = cip::encode_encap_reply(h.command, 0, 0, h.context, none);
+      out.reply = cip::encode_encap_reply(command_of(h), 0, status::success, h.context, none);
       return out;
     }
     default: break;
   }
   if (!tcp) return out;  // sessions and requests only over TCP; a datagram gets nothing
-  switch (static_cast<command>(h.command)) {
+  switch (command_of(h)) {
     case command::register_session: {
-      cip::reader r(data);
-      const auto version = r.u16("protocol version");
-      const auto options = r.u16("options");
-      if (!r.ok() || r.remaining() != 0) {
+      const auto reg = cip::decode_register_session(data, cip::encap_header_size);
+      if (!reg) {
         out.reply = error_reply(h, status::invalid_length);
         return out;
       }
-      if (version != 1 || options != 0) {
-        out.reply = cip::encode_encap_reply(h.command, 0, status::unsupported_protocol, h.context,
+      if (reg->version != 1 || reg->options != 0) {
+        out.reply = cip::encode_encap_reply(command_of(h), 0, status::unsupported_protocol, h.context,
                                             cip::register_session_data());
         return out;
       }
       if (l.session != 0) {  // one session per TCP connection
-        out.reply = cip::encode_encap_reply(h.command, 0, status::invalid_command, h.context,
+        out.reply = cip::encode_encap_reply(command_of(h), 0, status::invalid_command, h.context,
                                             cip::register_session_data());
         return out;
       }
       l.session = s.next_session++;
-      out.reply = cip::encode_encap_reply(h.command, l.session, 0, h.context, cip::register_session_data());
+      out.reply = cip::encode_encap_reply(command_of(h), l.session, status::success, h.context, cip::register_session_data());
       return out;
     }
     case command::unregister_session:
       if (l.session == 0 || h.session != l.session) {
-        out.reply = error_reply(h, status::invalid_session);
+        out.reply = error_reply(h, status::invalid_session_handle);
         return out;
       }
       l.session = 0;
@@ -130,22 +102,22 @@ encap_outcome handle_encap(state& s, link& l, cip::byte_view message, bool tcp, 
       return out;
     case command::send_rr_data: {
       if (l.session == 0 || h.session != l.session) {
-        out.reply = error_reply(h, status::invalid_session);
+        out.reply = error_reply(h, status::invalid_session_handle);
         return out;
       }
-      auto items = command_items(data);
-      const auto* u = items ? find(items.value(), cip::item::unconnected_data) : nullptr;
-      if (u == nullptr || find(items.value(), cip::item::null_address) == nullptr) {
+      const auto items = cip::decode_command_items(data, cip::encap_header_size);
+      const auto* u = items ? cip::find_item(items.value(), cip::item::unconnected_data) : nullptr;
+      if (u == nullptr || cip::find_item(items.value(), cip::item::null_address) == nullptr) {
         out.reply = error_reply(h, status::incorrect_data);
         return out;
       }
       const auto answer = handle_cip(s, l, u->data, now);
-      out.reply = cip::encode_encap_reply(h.command, h.session, 0, h.context, cip::send_rr_data(answer, 0));
+      out.reply = cip::encode_encap_reply(command_of(h), h.session, status::success, h.context, cip::send_rr_data(answer, 0));
       return out;
     }
     case command::send_unit_data:
       if (l.session == 0 || h.session != l.session) {
-        out.reply = error_reply(h, status::invalid_session);
+        out.reply = error_reply(h, status::invalid_session_handle);
         return out;
       }
       out.reply = unit_data(s, l, h, data, now);

@@ -20,11 +20,13 @@
 //   followed by the checksum (INT). Asking the last number again sends the
 //   same packet again (a reply that was lost).
 // docs/sim.md lists which answers are the simulator's own choice.
+// The transfer's bytes, both sides: cip/file_transfer.hpp.
 #include <algorithm>
 
 #include <fmt/format.h>
 
 #include "cip/device_reply.hpp"
+#include "cip/file_transfer.hpp"
 #include "cip/message.hpp"
 #include "sim/objects.hpp"
 
@@ -34,10 +36,7 @@ namespace {
 
 using cip::bytes;
 
-constexpr std::uint32_t eds_instance = 0xC8;
-constexpr std::uint8_t initiate_upload = 0x4B, upload_transfer = 0x4F;
 constexpr std::uint8_t state_loaded = 2, state_upload_initiated = 3, state_upload_in_progress = 5;
-constexpr std::uint8_t first = 0, middle = 1, last = 2, first_and_last = 4;
 
 // STRINGI with one string: language "eng", SHORT_STRING (0xDA), character set 4 (ISO 8859-1).
 void put_stringi(bytes& b, const std::string& text) {
@@ -48,12 +47,6 @@ void put_stringi(bytes& b, const std::string& text) {
   const auto n = std::min<std::size_t>(text.size(), 255);
   cip::put_u8(b, static_cast<std::uint8_t>(n));
   b.insert(b.end(), text.begin(), text.begin() + static_cast<std::ptrdiff_t>(n));
-}
-
-std::uint16_t checksum(const bytes& content) {
-  std::uint16_t sum = 0;
-  for (const auto c : content) sum = static_cast<std::uint16_t>(sum + c);
-  return static_cast<std::uint16_t>(0x10000 - sum);
 }
 
 std::uint8_t file_state(const state& s) {
@@ -71,33 +64,31 @@ bytes get_attribute(const state& s, const cip::request& q, std::uint32_t attr) {
     case 4: put_stringi(d, f.name); break;
     case 5: cip::put_u8(d, f.major); cip::put_u8(d, f.minor); break;
     case 6: cip::put_u32(d, static_cast<std::uint32_t>(f.content.size())); break;
-    case 7: cip::put_u16(d, checksum(f.content)); break;
+    case 7: cip::put_u16(d, cip::file_checksum(f.content)); break;
     case 10: cip::put_u8(d, 1); break;  // read only
     case 11: cip::put_u8(d, 0); break;  // binary, not compressed
-    default: return cip::encode_reply(q.service, general::attribute_unsupported);
+    default: return cip::encode_reply(q.service, general::attribute_not_supported);
   }
-  return cip::encode_reply(q.service, 0, {}, d);
+  return cip::encode_reply(q.service, general::success, {}, d);
 }
 
 // The packet that starts at `from` under transfer number `number`.
-bytes packet(const state& s, std::uint8_t service, std::uint8_t number, std::size_t from) {
+bytes packet(const state& s, cip::service service, std::uint8_t number, std::size_t from) {
   const auto& content = s.dev.file.content;
   const auto n = std::min<std::size_t>(s.upload.transfer_size, content.size() - from);
   const bool is_first = from == 0, is_last = from + n == content.size();
-  bytes d;
-  cip::put_u8(d, number);
-  cip::put_u8(d, is_first && is_last ? first_and_last : is_first ? first : is_last ? last : middle);
-  d.insert(d.end(), content.begin() + static_cast<std::ptrdiff_t>(from),
-           content.begin() + static_cast<std::ptrdiff_t>(from + n));
-  if (is_last) cip::put_u16(d, checksum(content));
-  return cip::encode_reply(service, 0, {}, d);
+  using type = cip::packet_type;
+  const auto t = is_first && is_last ? type::first_and_last : is_first ? type::first : is_last ? type::last : type::middle;
+  const auto d = cip::encode_upload_packet(number, t, cip::byte_view(content).subspan(from, n),
+                                           is_last ? std::optional(cip::file_checksum(content)) : std::nullopt);
+  return cip::encode_reply(service, general::success, {}, d);
 }
 
 bytes transfer(state& s, const cip::request& q) {
   if (q.data.empty()) return cip::encode_reply(q.service, general::not_enough_data);
   if (q.data.size() > 1) return cip::encode_reply(q.service, general::too_much_data);
   auto& u = s.upload;
-  if (!u.active) return cip::encode_reply(q.service, general::state_conflict);
+  if (!u.active) return cip::encode_reply(q.service, general::object_state_conflict);
   const auto number = q.data[0];
   if (u.offset > 0 && number == static_cast<std::uint8_t>(u.next - 1)) return packet(s, q.service, number, u.last_offset);
   if (number != u.next || u.done) return cip::encode_reply(q.service, general::invalid_parameter);
@@ -106,43 +97,41 @@ bytes transfer(state& s, const cip::request& q) {
   u.offset = std::min(u.offset + u.transfer_size, s.dev.file.content.size());
   u.done = u.offset == s.dev.file.content.size();
   ++u.next;
-  if (u.done) log_event(s, "uploaded", fmt::format("\"instance\":{},\"size\":{}", eds_instance, u.offset));
+  if (u.done) log_event(s, "uploaded", fmt::format("\"instance\":{},\"size\":{}", cip::eds_file_instance, u.offset));
   return reply;
 }
 
 }  // namespace
 
 bytes file_object(state& s, const cip::request& q, const cip::object_address& a) {
-  if (s.dev.file.content.empty()) return cip::encode_reply(q.service, general::path_unknown);
+  if (s.dev.file.content.empty()) return cip::encode_reply(q.service, general::path_destination_unknown);
   if (a.instance == 0) {  // class attributes: revision 1, max instance and number of instances
-    if (q.service != cip::service::get_attribute_single || !a.attribute) return cip::encode_reply(q.service, general::not_supported);
+    if (q.service != cip::service::get_attribute_single || !a.attribute) return cip::encode_reply(q.service, general::service_not_supported);
     bytes d;
     if (*a.attribute == 1 || *a.attribute == 3) cip::put_u16(d, 1);
-    else if (*a.attribute == 2) cip::put_u16(d, eds_instance);
-    else return cip::encode_reply(q.service, general::attribute_unsupported);
-    return cip::encode_reply(q.service, 0, {}, d);
+    else if (*a.attribute == 2) cip::put_u16(d, cip::eds_file_instance);
+    else return cip::encode_reply(q.service, general::attribute_not_supported);
+    return cip::encode_reply(q.service, general::success, {}, d);
   }
-  if (a.instance != eds_instance) return cip::encode_reply(q.service, general::object_does_not_exist);
+  if (a.instance != cip::eds_file_instance) return cip::encode_reply(q.service, general::object_does_not_exist);
   switch (q.service) {
     case cip::service::get_attribute_single:
-      if (!a.attribute) return cip::encode_reply(q.service, general::not_supported);
+      if (!a.attribute) return cip::encode_reply(q.service, general::service_not_supported);
       return get_attribute(s, q, *a.attribute);
     case cip::service::set_attribute_single:
-      if (!a.attribute) return cip::encode_reply(q.service, general::not_supported);
-      return cip::encode_reply(q.service, get_attribute(s, q, *a.attribute)[2] == 0 ? general::not_settable
-                                                                                     : general::attribute_unsupported);
-    case initiate_upload: {
+      if (!a.attribute) return cip::encode_reply(q.service, general::service_not_supported);
+      return cip::encode_reply(q.service, get_attribute(s, q, *a.attribute)[2] == 0 ? general::attribute_not_settable
+                                                                                     : general::attribute_not_supported);
+    case cip::service::initiate_upload: {
       if (q.data.empty()) return cip::encode_reply(q.service, general::not_enough_data);
       if (q.data.size() > 1) return cip::encode_reply(q.service, general::too_much_data);
       if (q.data[0] == 0) return cip::encode_reply(q.service, general::invalid_parameter);
       s.upload = file_upload{true, false, q.data[0], 0, 0, 0};  // a new upload restarts one left unfinished
-      bytes d;
-      cip::put_u32(d, static_cast<std::uint32_t>(s.dev.file.content.size()));
-      cip::put_u8(d, s.upload.transfer_size);
-      return cip::encode_reply(q.service, 0, {}, d);
+      const auto d = cip::encode_upload_offer({static_cast<std::uint32_t>(s.dev.file.content.size()), s.upload.transfer_size});
+      return cip::encode_reply(q.service, general::success, {}, d);
     }
-    case upload_transfer: return transfer(s, q);
-    default: return cip::encode_reply(q.service, general::not_supported);
+    case cip::service::upload_transfer: return transfer(s, q);
+    default: return cip::encode_reply(q.service, general::service_not_supported);
   }
 }
 

@@ -9,13 +9,7 @@
 
 namespace edsc::sim {
 
-namespace general {
-inline constexpr std::uint8_t success = 0x00, connection_failure = 0x01, path_segment_error = 0x04,
-                              path_unknown = 0x05, not_supported = 0x08, invalid_attribute_value = 0x09,
-                              state_conflict = 0x0C, not_settable = 0x0E, not_enough_data = 0x13,
-                              attribute_unsupported = 0x14, too_much_data = 0x15, object_does_not_exist = 0x16,
-                              invalid_parameter = 0x20;
-}
+using general = cip::general_status;
 
 [[nodiscard]] cip::bytes connection_manager(state& s, const link& l, const cip::request& q,
                                             const cip::object_address& a, clock::time_point now);

@@ -195,7 +195,7 @@ bool put_attribute(bytes& d, const parameter_instance& p, std::uint32_t attr) {
 }
 
 bytes set_value(state& s, const cip::request& q, parameter_instance& p) {
-  if (p.read_only || p.type == nullptr) return cip::encode_reply(q.service, general::not_settable);
+  if (p.read_only || p.type == nullptr) return cip::encode_reply(q.service, general::attribute_not_settable);
   if (q.data.size() < p.type->size) return cip::encode_reply(q.service, general::not_enough_data);
   if (q.data.size() > p.type->size) return cip::encode_reply(q.service, general::too_much_data);
   const auto& t = *p.type;
@@ -206,16 +206,16 @@ bytes set_value(state& s, const cip::request& q, parameter_instance& p) {
   if (!in_range || !listed) return cip::encode_reply(q.service, general::invalid_attribute_value);
   p.value.assign(q.data.begin(), q.data.end());
   log_event(s, "parameter", fmt::format("\"instance\":{},\"data\":\"{}\"", p.number, hex(p.value)));
-  return cip::encode_reply(q.service, 0);
+  return cip::encode_reply(q.service, general::success);
 }
 
 bytes class_attributes(const state& s, const cip::request& q, const cip::object_address& a) {
-  if (!a.attribute) return cip::encode_reply(q.service, general::not_supported);
+  if (!a.attribute) return cip::encode_reply(q.service, general::service_not_supported);
   const auto attr = *a.attribute;
   const bool known = attr == 1 || attr == 2 || attr == 3 || attr == 8 || attr == 9 || attr == 10;
   if (q.service == cip::service::set_attribute_single)
-    return cip::encode_reply(q.service, known ? general::not_settable : general::attribute_unsupported);
-  if (q.service != cip::service::get_attribute_single) return cip::encode_reply(q.service, general::not_supported);
+    return cip::encode_reply(q.service, known ? general::attribute_not_settable : general::attribute_not_supported);
+  if (q.service != cip::service::get_attribute_single) return cip::encode_reply(q.service, general::service_not_supported);
   bytes d;
   switch (attr) {
     case 1: cip::put_u16(d, 1); break;
@@ -224,9 +224,9 @@ bytes class_attributes(const state& s, const cip::request& q, const cip::object_
     case 8: cip::put_u16(d, s.dev.param_class_descriptor); break;
     case 9: cip::put_u16(d, s.dev.cfg_assembly); break;
     case 10: cip::put_u8(d, 0); break;  // English
-    default: return cip::encode_reply(q.service, general::attribute_unsupported);
+    default: return cip::encode_reply(q.service, general::attribute_not_supported);
   }
-  return cip::encode_reply(q.service, 0, {}, d);
+  return cip::encode_reply(q.service, general::success, {}, d);
 }
 
 }  // namespace
@@ -248,26 +248,26 @@ parameter_instance* device::param(std::uint32_t number) {
 }
 
 bytes parameter_object(state& s, const cip::request& q, const cip::object_address& a) {
-  if (s.dev.params.empty()) return cip::encode_reply(q.service, general::path_unknown);
+  if (s.dev.params.empty()) return cip::encode_reply(q.service, general::path_destination_unknown);
   if (a.instance == 0) return class_attributes(s, q, a);
   auto* p = s.dev.param(a.instance);
   if (p == nullptr) return cip::encode_reply(q.service, general::object_does_not_exist);
   if (q.service == cip::service::get_attributes_all) {
     bytes d;  // attributes 1 to 21 in order
     for (std::uint32_t i = 1; i <= 21; ++i) (void)put_attribute(d, *p, i);
-    return cip::encode_reply(q.service, 0, {}, d);
+    return cip::encode_reply(q.service, general::success, {}, d);
   }
   if (q.service != cip::service::get_attribute_single && q.service != cip::service::set_attribute_single)
-    return cip::encode_reply(q.service, general::not_supported);
-  if (!a.attribute) return cip::encode_reply(q.service, general::not_supported);
+    return cip::encode_reply(q.service, general::service_not_supported);
+  if (!a.attribute) return cip::encode_reply(q.service, general::service_not_supported);
   const auto attr = *a.attribute;
   if (q.service == cip::service::set_attribute_single) {
     if (attr == 1) return set_value(s, q, *p);
-    return cip::encode_reply(q.service, attr >= 2 && attr <= 21 ? general::not_settable : general::attribute_unsupported);
+    return cip::encode_reply(q.service, attr >= 2 && attr <= 21 ? general::attribute_not_settable : general::attribute_not_supported);
   }
   bytes d;
-  if (!put_attribute(d, *p, attr)) return cip::encode_reply(q.service, general::attribute_unsupported);
-  return cip::encode_reply(q.service, 0, {}, d);
+  if (!put_attribute(d, *p, attr)) return cip::encode_reply(q.service, general::attribute_not_supported);
+  return cip::encode_reply(q.service, general::success, {}, d);
 }
 
 }  // namespace edsc::sim

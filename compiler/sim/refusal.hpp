@@ -12,17 +12,10 @@
 
 namespace edsc::sim {
 
-namespace ext {
-inline constexpr std::uint16_t in_use = 0x0100, transport_trigger = 0x0103, ownership = 0x0106, not_found = 0x0107,
-                               fixed_variable = 0x0109, rpi = 0x0111, out_of_connections = 0x0113,
-                               vendor_code = 0x0114, device_type = 0x0115, revision = 0x0116, no_owner = 0x0119,
-                               transport_class = 0x011C, ot_type = 0x0123, to_type = 0x0124, config_size = 0x0126,
-                               ot_size = 0x0127, to_size = 0x0128, inconsistent_path = 0x012F,
-                               bad_segment = 0x0315;
-}
+using ext = cip::extended_status;
 
 struct refusal {
-  std::uint16_t status = 0;
+  cip::extended_status status{};
   std::vector<std::uint16_t> additional;  // after the extended status: the size accepted (0x0126-0x0128)
   std::string why;
 };

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cip/bytes.hpp"
+#include "cip/codes.hpp"
 #include "sim/device.hpp"
 
 namespace edsc::sim {
@@ -77,8 +78,9 @@ struct state {
     run = run || c.run;
     owned = owned || s.dev.points[*c.point].kind == point_kind::exclusive_owner;
   }
-  const std::uint16_t extended = !io ? 0x0030 : run ? 0x0060 : 0x0070;
-  return static_cast<std::uint16_t>(extended | (owned ? 0x0001 : 0));
+  using cip::device_state;
+  const auto word = static_cast<std::uint16_t>(owned ? cip::code(cip::identity_bit::owned) : 0);
+  return cip::with_device_state(word, !io ? device_state::no_io : run ? device_state::io_running : device_state::io_idle);
 }
 
 // What to send back on the same socket; `close` ends a TCP connection.

@@ -68,7 +68,7 @@ class comparer {
     auto d = make_diagnostic(id, log_.frames[*x.answer].where, std::move(message));
     d.notes.push_back({log_.frames[x.request].where,
                        fmt::format("the scanner asked for {} here", x.has_attr ? attribute_name(x.cls, x.inst, x.attr)
-                                                                              : service_name(x.service))});
+                                                                              : service_name(x.service, x.cls))});
     result_.diags.push_back(std::move(d));
   }
 

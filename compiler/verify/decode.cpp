@@ -172,13 +172,13 @@ class decoder {
     const bool path_attr = x.service == svc_get || x.service == svc_set;
     if (path_attr && b.size() < 5) {
       d.undecodable = true;
-      d.why = fmt::format("{} without an attribute", service_name(x.service));
+      d.why = fmt::format("{} without an attribute", service_name(x.service, x.cls));
       return;
     }
     x.has_attr = path_attr;
     if (path_attr) x.attr = b[4];
     x.value.assign(b.begin() + (path_attr ? 5 : 4), b.end());
-    d.meaning = fmt::format("{} {}/{}", service_name(x.service), x.cls, x.inst);
+    d.meaning = fmt::format("{} {}/{}", service_name(x.service, x.cls), x.cls, x.inst);
     if (x.has_attr) d.meaning += fmt::format("/{} ({})", x.attr, attribute_name(x.cls, x.inst, x.attr));
     if ((x.service == svc_allocate || x.service == svc_release) && !x.value.empty())
       d.meaning += ": " + choice_names(x.value[0]);
@@ -235,7 +235,7 @@ class decoder {
     x.data.assign(body.begin() + 1, body.end());
     if (x.service == svc_allocate && !x.value.empty()) node.allocated |= x.value[0];
     if (x.service == svc_release && !x.value.empty()) node.allocated &= static_cast<std::uint8_t>(~x.value[0]);
-    d.meaning += fmt::format("{}{} ok{}", d.meaning.empty() ? "" : ", ", service_name(x.service),
+    d.meaning += fmt::format("{}{} ok{}", d.meaning.empty() ? "" : ", ", service_name(x.service, x.cls),
                              x.data.empty() ? "" : ": " + hex_bytes(x.data));
   }
 

@@ -63,7 +63,7 @@ struct conversation {
 [[nodiscard]] conversation decode(const can_log& log);
 
 // "Get_Attribute_Single", "Allocate_Master/Slave_Connection_Set"...
-[[nodiscard]] std::string service_name(std::uint8_t service);
+[[nodiscard]] std::string service_name(std::uint8_t service, std::uint8_t cls);
 // "Identity revision", "Connection 4 produced_connection_size"...
 [[nodiscard]] std::string attribute_name(std::uint8_t cls, std::uint8_t inst, std::uint8_t attr);
 [[nodiscard]] std::string status_name(std::uint8_t general);

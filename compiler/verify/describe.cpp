@@ -2,20 +2,14 @@
 // and the --decode table.
 #include <fmt/format.h>
 
+#include "cip/codes.hpp"
 #include "verify/decode.hpp"
 
 namespace edsc::verify {
 
-std::string service_name(std::uint8_t service) {
-  switch (service) {
-    case 0x01: return "Get_Attributes_All";
-    case 0x05: return "Reset";
-    case 0x0E: return "Get_Attribute_Single";
-    case 0x10: return "Set_Attribute_Single";
-    case 0x4B: return "Allocate_Master/Slave_Connection_Set";
-    case 0x4C: return "Release_Group_2_Identifier_Set";
-    default: return fmt::format("service 0x{:02X}", service);
-  }
+std::string service_name(std::uint8_t service, std::uint8_t cls) {
+  const auto name = cip::name_of(cip::service{service}, cip::class_id{cls});
+  return name.empty() ? fmt::format("service 0x{:02X}", service) : std::string(name);
 }
 
 std::string attribute_name(std::uint8_t cls, std::uint8_t inst, std::uint8_t attr) {
@@ -44,18 +38,10 @@ std::string attribute_name(std::uint8_t cls, std::uint8_t inst, std::uint8_t att
 }
 
 std::string status_name(std::uint8_t general) {
-  switch (general) {
-    case 0x00: return "success";
-    case 0x02: return "resource unavailable (0x02)";
-    case 0x08: return "service not supported (0x08)";
-    case 0x09: return "invalid attribute value (0x09)";
-    case 0x0B: return "already in requested mode (0x0B)";
-    case 0x0C: return "object state conflict (0x0C)";
-    case 0x0E: return "attribute not settable (0x0E)";
-    case 0x14: return "attribute not supported (0x14)";
-    case 0x16: return "object does not exist (0x16)";
-    default: return fmt::format("general status 0x{:02X}", general);
-  }
+  const cip::general_status status{general};
+  if (status == cip::general_status::success) return "success";
+  const auto words = cip::words_of(status);
+  return words.empty() ? fmt::format("general status 0x{:02X}", general) : fmt::format("{} (0x{:02X})", words, general);
 }
 
 std::string choice_names(std::uint8_t choice) {

@@ -16,6 +16,7 @@
 #include "check/check_file.hpp"
 #include "cip/connection_manager.hpp"
 #include "cip/encap.hpp"
+#include "cip/file_transfer.hpp"
 #include "cip/io_frame.hpp"
 #include "cip/message.hpp"
 #include "cst/cst.hpp"
@@ -323,6 +324,12 @@ inline std::string cip_body(std::string_view input) {
   judge("Identity", cip::decode_identity_all(b, base));
   judge("Forward_Open reply", cip::decode_forward_open_ok(b, base));
   judge("Forward_Close reply", cip::decode_forward_close(b, base));
+  judge("Initiate_Upload reply", cip::decode_upload_offer(b, base));
+  if (const auto p = cip::decode_upload_packet(b, base); p.ok()) {
+    if (2 + p->data.size() + (p->checksum ? 2 : 0) != b.size()) return "an upload packet's parts do not add up to its bytes";
+  } else {
+    judge("Upload_Transfer reply", p);
+  }
   if (const auto r = cip::decode_reply(b, base); r.ok()) {
     if (4 + 2 * r->additional.size() + r->data.size() != b.size()) return "a reply's parts do not add up to its bytes";
   } else {

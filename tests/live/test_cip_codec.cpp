@@ -228,9 +228,9 @@ TEST(cip_io, class1_frame_round_trip) {
 }
 
 TEST(cip_status, words_for_codes) {
-  EXPECT_EQ(extended_status_text(0x0128), "invalid T->O size");
-  EXPECT_EQ(general_status_text(0x08), "service not supported");
-  EXPECT_EQ(encap_status_text(0x64), "invalid session handle");
+  EXPECT_EQ(words_of(extended_status{0x0128}), "invalid T->O size");
+  EXPECT_EQ(words_of(general_status{0x08}), "service not supported");
+  EXPECT_EQ(words_of(encap_status{0x64}), "invalid session handle");
   EXPECT_EQ(describe_status(0x01, std::vector<std::uint16_t>{0x9999}), "0x01 connection failure, extended 0x9999 (unknown code)");
 }
 

@@ -54,7 +54,7 @@ class sim_tool : public ::testing::Test {
   }
   cip::reply ask(std::uint8_t service, std::uint32_t cls, std::uint32_t instance, std::optional<std::uint32_t> attr,
                  const std::string& data = "") {
-    auto r = session_->request(service, cip::logical_path(cls, instance, attr), unhex(data));
+    auto r = session_->request(cip::service{service}, cip::logical_path(cls, instance, attr), unhex(data));
     EXPECT_FALSE(live::failed(r));
     return live::failed(r) ? cip::reply{} : std::get<cip::reply>(r);
   }
