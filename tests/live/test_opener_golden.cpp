@@ -12,7 +12,7 @@
 
 #include "golden_file.hpp"
 #include "netns/run_edsc.hpp"
-#include "netns/test_network.hpp"
+#include "opener_device.hpp"
 #include "test_paths.hpp"
 
 namespace edsc::live_test {
@@ -22,21 +22,14 @@ namespace fs = std::filesystem;
 
 const fs::path goldens = fs::path(EDSC_TESTS_DIR) / "live" / "golden";
 
-class live_opener_golden : public ::testing::Test {
+class live_opener_golden : public opener_device_test {
  protected:
-  void SetUp() override {
-    std::string why;
-    net_ = test_network::make(why);
-    if (!net_) GTEST_SKIP() << why;
-    if (!fs::exists(EDSC_OPENER_BINARY)) GTEST_SKIP() << "OpENer was not built (" << EDSC_OPENER_BINARY << ")";
-    ASSERT_TRUE(net_->start_opener(EDSC_OPENER_BINARY, why)) << why;
-  }
   // `text` with what differs between runs replaced by its kind.
   [[nodiscard]] std::string masked(std::string text) const {
     const auto replace = [&](const std::string& pattern, const std::string& with) {
       text = std::regex_replace(text, std::regex(pattern), with);
     };
-    replace(std::regex_replace(net_->device_ip, std::regex("\\."), "\\."), "<device>");
+    replace(std::regex_replace(device(), std::regex("\\."), "\\."), "<device>");
     replace(std::regex_replace(std::string(EDSC_SHARED_DIR), std::regex(R"([.^$|()\[\]{}*+?\\])"), "\\$&"),
             "<shared>");
     replace(R"([0-9]+(\.[0-9]+)? ?ms\b)", "<n> ms");
@@ -45,19 +38,18 @@ class live_opener_golden : public ::testing::Test {
     replace("   +", "  ");
     return text;
   }
-  std::unique_ptr<test_network> net_;
 };
 
 const std::string opener_eds = std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds";
 
 TEST_F(live_opener_golden, probe_text) {
-  const auto r = run_edsc("probe " + net_->device_ip);
+  const auto r = run_edsc("probe " + device());
   EXPECT_EQ(r.status, 0) << r.output;
   test::expect_golden(goldens / "probe-opener.txt", masked(r.output));
 }
 
 TEST_F(live_opener_golden, verify_live_connections_text) {
-  const auto r = run_edsc("verify --live " + net_->device_ip + " " + quoted(opener_eds) + " --connections --color never");
+  const auto r = run_edsc("verify --live " + device() + " " + quoted(opener_eds) + " --connections --color never");
   EXPECT_EQ(r.status, 0) << r.output;
   test::expect_golden(goldens / "verify-live-opener.txt", masked(r.output));
 }
