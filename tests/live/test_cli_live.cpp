@@ -17,7 +17,16 @@ TEST(live_cli, connections_says_in_help_that_it_can_take_outputs) {
   EXPECT_NE(r.output.find("--live HOST"), std::string::npos) << r.output;
 }
 
-TEST(live_cli, usage_errors_exit_2_with_a_reason) {
+// Each case is refused before anything is sent; in a namespace of its own
+// all the same, so that a refusal gone missing reaches no one's 127.0.0.1,
+// and a broadcast no one's network.
+class live_cli_refusals : public loopback_test {};
+
+TEST_F(live_cli_refusals, usage_errors_exit_2_with_a_reason) {
+  // A route for the broadcast to take, into this namespace's loopback: the
+  // kernel's refusal without SO_BROADCAST comes after the route lookup,
+  // which a namespace with no route fails first ("unreachable").
+  ASSERT_EQ(shell("ip route add default dev lo 2>&1").status, 0);
   const auto eds = quoted(std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds");
   const std::pair<std::string, std::string> cases[] = {
       {"verify " + eds + " --connections", "needs --live HOST"},
@@ -38,7 +47,6 @@ TEST(live_cli, usage_errors_exit_2_with_a_reason) {
 // option named), never ignored; a library that cannot be read is refused
 // before the device is asked. In a namespace of its own: were a refusal
 // missing, edsc would go on and contact 127.0.0.1, which must be no one's.
-class live_cli_refusals : public loopback_test {};
 
 TEST_F(live_cli_refusals, options_that_mean_nothing_are_refused_by_name) {
   const auto eds = quoted(std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds");

@@ -20,6 +20,7 @@
 #include "netns/live_support.hpp"
 #include "netns/run_edsc.hpp"
 #include "netns/test_network.hpp"
+#include "opener_device.hpp"
 #include "test_paths.hpp"
 
 namespace edsc::live_test {
@@ -29,16 +30,8 @@ namespace fs = std::filesystem;
 
 const std::string opener_eds = std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds";
 
-class live_opener : public ::testing::Test {
+class live_opener : public opener_device_test {
  protected:
-  void SetUp() override {
-    std::string why;
-    net_ = test_network::make(why);
-    if (!net_) GTEST_SKIP() << why;
-    if (!fs::exists(EDSC_OPENER_BINARY)) GTEST_SKIP() << "OpENer was not built (" << EDSC_OPENER_BINARY << ")";
-    ASSERT_TRUE(net_->start_opener(EDSC_OPENER_BINARY, why)) << why;
-  }
-  [[nodiscard]] std::string device() const { return net_->device_ip; }
   // A copy of OpENer's EDS in the test's folder, edited by `edsc edit`.
   std::string faulty_copy(const std::string& set) {
     const auto path = net_->dir + "/faulty.eds";
@@ -54,7 +47,6 @@ class live_opener : public ::testing::Test {
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
     return dump;
   }
-  std::unique_ptr<test_network> net_;
 };
 
 // The 1-based line of the first line of `path` holding `needle` after line `from`.

@@ -351,11 +351,76 @@ TEST_F(OutputPolicy, ASiteIsNotWrittenIntoTheFolderItDocuments) {
   EXPECT_TRUE(fs::exists(lib / "site" / "index.html"));
 }
 
-TEST_F(OutputPolicy, StreamNamesWriteToTheOpenDescriptor) {
-  // /dev/stdout as -o is the stream edsc was given, not a file to replace.
-  const auto r = run_edsc({"header", eds_in(dir_).string(), "-o", "/dev/stdout"}, time_limit);
-  EXPECT_EQ(r.status, 0) << r.output;
-  EXPECT_NE(r.output.find("#define EDS_VENDOR_ID"), std::string::npos) << r.output;
+// Runs `args` through the shell with `redirections` (`>>out`, `5>>out`), as a
+// user names a stream; the exit status, or 128 when killed. Appended piece
+// by piece: GCC 12 warns falsely (-Wrestrict) on "..." + std::string&&.
+int run_redirected(const std::vector<std::string>& args, const std::string& redirections) {
+  std::string cmd = "timeout -s KILL ";
+  cmd += std::to_string(edsc::test_time::scaled(time_limit).count());
+  cmd += ' ';
+  cmd += shell_quote(EDSC_BINARY);
+  for (const auto& a : args) {
+    cmd += ' ';
+    cmd += shell_quote(a);
+  }
+  cmd += " </dev/null ";
+  cmd += redirections;
+  const int ws = std::system(cmd.c_str());
+  return WIFEXITED(ws) ? WEXITSTATUS(ws) : 128;
+}
+
+// A name of an open stream is written through that descriptor, where it is:
+// with the stream a regular file opened for append (`>>`), whatever the file
+// held before stays, and edsc's output follows it. Replacing or reopening
+// the file the name resolves to (what a name of a regular file gets) would
+// lose it; that only shows when the stream is a file, not a pipe.
+TEST_F(OutputPolicy, StreamNamesAppendToAFileOpenedForAppend) {
+  struct stream {
+    std::string name;
+    int fd;  // the descriptor the shell opens the file on
+  };
+  const std::vector<stream> streams{
+      {"-", 1}, {"/dev/stdout", 1}, {"/dev/stderr", 2}, {"/dev/fd/5", 5}, {"/proc/self/fd/5", 5}};
+  const std::string before = "held before edsc ran\n";
+  for (const auto& c : writers_) {
+    for (const auto& s : streams) {
+      const auto d = fresh_dir();
+      // The other standard streams go to a file of their own, so that what
+      // lands on the named stream is its output alone.
+      const std::string rest = s.fd == 2 ? " >" + shell_quote((d / "rest").string())
+                                         : " 2>" + shell_quote((d / "rest").string());
+      // What the stream gets when its file starts empty...
+      const auto alone = (d / "alone").string();
+      int status = run_redirected(c.args(dir_, s.name), std::to_string(s.fd) + ">" + shell_quote(alone) + rest);
+      EXPECT_EQ(status, 0) << c.name << " -o " << s.name << "\n" << read_bytes(d / "rest");
+      const auto output = read_bytes(alone);
+      EXPECT_GT(output.size(), 100u) << c.name << " -o " << s.name << ": nothing on the stream";
+      // ... follows what the file held when it was opened for append.
+      const auto appended = d / "appended";
+      write_bytes(appended, before);
+      struct stat st0 {};
+      ASSERT_EQ(::stat(appended.c_str(), &st0), 0);
+      status = run_redirected(c.args(dir_, s.name),
+                              std::to_string(s.fd) + ">>" + shell_quote(appended.string()) + rest);
+      EXPECT_EQ(status, 0) << c.name << " -o " << s.name << "\n" << read_bytes(d / "rest");
+      const auto got = read_bytes(appended);
+      EXPECT_TRUE(got.starts_with(before)) << c.name << " -o " << s.name << ": what the file held is lost";
+      EXPECT_TRUE(got.size() >= before.size() && got.substr(before.size()) == output)
+          << c.name << " -o " << s.name << ": " << got.size() << " bytes, not the " << before.size() << " held and the "
+          << output.size() << " of the output";
+      struct stat st1 {};
+      ASSERT_EQ(::stat(appended.c_str(), &st1), 0);
+      EXPECT_EQ(st1.st_ino, st0.st_ino) << c.name << " -o " << s.name << ": the file was replaced";
+    }
+  }
+}
+
+// A stream name whose descriptor is not open is an error, not a file made
+// under /proc or /dev.
+TEST_F(OutputPolicy, AStreamNameOfAClosedDescriptorIsRefused) {
+  const auto r = run_edsc({"header", eds_in(dir_).string(), "-o", "/dev/fd/999999"}, time_limit);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("/dev/fd/999999: no such open stream"), std::string::npos) << r.output;
 }
 
 // The raw atomic write is internal to compiler/io (output_target.cpp): no

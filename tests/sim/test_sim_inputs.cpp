@@ -11,6 +11,7 @@
 #include "edit/analyze.hpp"
 #include "netns/live_support.hpp"
 #include "netns/run_edsc.hpp"
+#include "netns/test_network.hpp"
 #include "sim_eds.hpp"
 #include "sim/inputs.hpp"
 
@@ -177,7 +178,10 @@ TEST(sim_inputs_cli, a_bad_inputs_file_stops_edsc_sim_with_its_place) {
   const auto eds = (dir / "inputs.eds").string(), toml = (dir / "bad.toml").string();
   std::ofstream(eds) << inputs_eds;
   std::ofstream(toml) << "[Assem5]\nrun = 2\n";
-  const auto r = live_test::run_edsc("sim " + live_test::quoted(eds) + " --address 127.0.0.1 --port 1 --inputs " +
+  // An address no interface holds: a simulator that got past the check
+  // could listen nowhere, and meets no other test.
+  const std::string nowhere = live_test::unused_test_address;
+  const auto r = live_test::run_edsc("sim " + live_test::quoted(eds) + " --address " + nowhere + " --inputs " +
                                      live_test::quoted(toml), 30);
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find(toml + ":2:7: error: \"Run\" (Param2) is a 1-bit unsigned field: 2 does not fit (0..1) "
@@ -187,7 +191,7 @@ TEST(sim_inputs_cli, a_bad_inputs_file_stops_edsc_sim_with_its_place) {
   EXPECT_NE(r.output.find("run = 2\n"), std::string::npos) << r.output;
   const auto json = (dir / "bad.json").string();
   std::ofstream(json) << "{\"100\": \"01\"}";
-  const auto j = live_test::run_edsc("sim " + live_test::quoted(eds) + " --address 127.0.0.1 --port 1 --inputs " +
+  const auto j = live_test::run_edsc("sim " + live_test::quoted(eds) + " --address " + nowhere + " --inputs " +
                                      live_test::quoted(json) + " --stdin", 30);
   EXPECT_EQ(j.status, 2) << j.output;
   EXPECT_NE(j.output.find(json + ":1:2: error: instance 100 holds 8 bytes, 1 given [sim-inputs-hex]"), std::string::npos)

@@ -13,6 +13,7 @@
 #include "edit/analyze.hpp"
 #include "netns/live_support.hpp"
 #include "netns/run_edsc.hpp"
+#include "netns/test_network.hpp"
 #include "sim_eds.hpp"
 #include "sim/inputs.hpp"
 #include "test_paths.hpp"
@@ -120,7 +121,10 @@ TEST_F(sim_inputs_twice, a_field_or_an_assembly_named_twice_is_located) {
 TEST(sim_inputs_names, a_folder_as_the_inputs_file_is_an_error_in_words) {
   const auto dir = std::filesystem::temp_directory_path() / ("edsc-sim-inputs-dir-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
-  const auto r = live_test::run_edsc("sim " + live_test::quoted(opener_eds) + " --address 127.0.0.1 --port 1 --inputs " +
+  // An address no interface holds: a simulator that got past the check
+  // could listen nowhere, and meets no other test.
+  const std::string nowhere = live_test::unused_test_address;
+  const auto r = live_test::run_edsc("sim " + live_test::quoted(opener_eds) + " --address " + nowhere + " --inputs " +
                                      live_test::quoted(dir.string()), 30);
   std::filesystem::remove_all(dir);
   EXPECT_EQ(r.status, 2) << r.output;
