@@ -2,6 +2,7 @@
 // Class 1 (implicit) I/O frames on UDP port 2222: a sequenced address item
 // and a connected data item holding the 16-bit sequence count, the run/idle
 // header where the connection's format has one, then the data (§5).
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 
@@ -16,6 +17,11 @@ struct io_frame {
   std::optional<std::uint32_t> run_idle;  // bit 0: run
   bytes data;
 };
+
+// The largest frame a receiver must take whole: a Large_Forward_Open
+// connection's size is 16 bits, so its frames outgrow an Ethernet frame
+// (they travel as IP fragments) up to the largest UDP datagram.
+inline constexpr std::size_t max_io_frame_size = 65536;
 
 [[nodiscard]] bytes encode_io_frame(const io_frame& f);
 // `run_idle` says whether the connection's format carries the header.

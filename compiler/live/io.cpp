@@ -4,6 +4,7 @@
 #include <sys/socket.h>
 
 #include <cerrno>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -32,6 +33,7 @@ void measure(int sock, const connection_plan& plan, const cip::forward_open_repl
   std::optional<clock::time_point> first, last;
   sockaddr_in to = device;
   to.sin_port = htons(cip::io_port);
+  std::vector<std::uint8_t> frame(cip::max_io_frame_size);  // a T->O frame, whole
   while (clock::now() < end && interruption() == 0) {
     if (send_ot && clock::now() >= next_send) {
       cip::io_frame f;
@@ -46,12 +48,11 @@ void measure(int sock, const connection_plan& plan, const cip::forward_open_repl
     }
     const auto wake = send_ot ? std::min(next_send, end) : end;
     if (!wait_readable(sock, wake, true)) continue;
-    std::uint8_t buf[2048];
     sockaddr_in from{};
     socklen_t len = sizeof from;
-    const auto n = ::recvfrom(sock, buf, sizeof buf, 0, reinterpret_cast<sockaddr*>(&from), &len);
+    const auto n = ::recvfrom(sock, frame.data(), frame.size(), 0, reinterpret_cast<sockaddr*>(&from), &len);
     if (n <= 0 || from.sin_addr.s_addr != device.sin_addr.s_addr) continue;
-    auto f = cip::decode_io_frame(cip::byte_view(buf, static_cast<std::size_t>(n)), plan.to_run_idle);
+    auto f = cip::decode_io_frame(cip::byte_view(frame.data(), static_cast<std::size_t>(n)), plan.to_run_idle);
     if (!f) {
       ++st.undecodable;
       continue;

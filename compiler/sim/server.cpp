@@ -15,6 +15,7 @@
 
 #include <fmt/format.h>
 
+#include "cip/io_frame.hpp"
 #include "live/socket.hpp"
 #include "sim/inputs.hpp"
 #include "sim/sockets.hpp"
@@ -106,6 +107,7 @@ std::string serve(state& s, const server_options& opt, const std::atomic<bool>& 
   emit(listening_line(s, opt.address, port, opt.io_port));
 
   std::vector<client> clients;
+  std::vector<std::uint8_t> frame(cip::max_io_frame_size);  // an O->T frame, whole
   std::uint64_t produced = 0;
   int control_fd = opt.control_fd;
   std::string control_pending;
@@ -159,12 +161,11 @@ std::string serve(state& s, const server_options& opt, const std::atomic<bool>& 
       }
       if (fds[2].revents & POLLIN)
         for (int i = 0; i < 64; ++i) {  // drain what is there, boundedly
-          std::uint8_t buf[2048];
           sockaddr_in peer{};
           socklen_t len = sizeof peer;
-          const auto n = ::recvfrom(io.get(), buf, sizeof buf, 0, reinterpret_cast<sockaddr*>(&peer), &len);
+          const auto n = ::recvfrom(io.get(), frame.data(), frame.size(), 0, reinterpret_cast<sockaddr*>(&peer), &len);
           if (n <= 0) break;
-          consume_io(s, cip::byte_view(buf, static_cast<std::size_t>(n)), peer.sin_addr.s_addr, now);
+          consume_io(s, cip::byte_view(frame.data(), static_cast<std::size_t>(n)), peer.sin_addr.s_addr, now);
         }
       if ((fds[3].revents & (POLLIN | POLLHUP | POLLERR)) && !read_control(s, control_fd, control_pending, emit))
         control_fd = -1;  // poll() skips a negative descriptor

@@ -3,6 +3,7 @@
 #include <arpa/inet.h>
 #include <fcntl.h>
 #include <netinet/in.h>
+#include <sched.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/file.h>
@@ -18,6 +19,7 @@
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <regex>
 #include <set>
 #include <thread>
@@ -68,6 +70,7 @@ std::set<int> subnets_in_use() {
 void remove_leftovers(const network_options& opt, int subnet) {
   const auto n = std::to_string(subnet);
   run("ip netns del " + opt.ns_prefix + n);
+  run("ip netns del " + opt.ns_prefix + n + "-s");
   run("ip link del " + opt.link_prefix + n + "h");
   std::error_code ec;
   fs::remove_all(fs::temp_directory_path() / (opt.ns_prefix + n), ec);
@@ -101,8 +104,10 @@ const char* const route = "unreachable 198.51.100.0/24 proto 69";
 // not, or "".
 std::string keep_packets_in(const test_network& n) {
   run(std::string("ip route add ") + route);
-  for (const auto& [where, prefix] : {std::pair<std::string, std::string>{"this host", ""},
-                                      {"the namespace " + n.ns, "ip netns exec " + n.ns + " "}}) {
+  std::vector<std::pair<std::string, std::string>> places = {{"this host", ""},
+                                                             {"the namespace " + n.ns, "ip netns exec " + n.ns + " "}};
+  if (!n.scanner_ns.empty()) places.emplace_back("the namespace " + n.scanner_ns, "ip netns exec " + n.scanner_ns + " ");
+  for (const auto& [where, prefix] : places) {
     const auto r = shell(prefix + "ip route get " + unused_test_address + " 2>&1");
     if (r.status == 0)
       return std::string("a test packet to ") + unused_test_address + " (TEST-NET-2, in no test network) would " +
@@ -180,7 +185,17 @@ std::unique_ptr<test_network> test_network::make(std::string& why, const network
       in_ns + "ip link set " + n->dev_if + " up",
       in_ns + "ip link set lo up",
   };
-  for (const auto& s : steps)
+  std::vector<std::string> all_steps = steps;
+  if (opt.scanner_namespace) {
+    // Moving the host's end drops its address: it is given again there.
+    n->scanner_ns = n->ns + "-s";
+    const std::string in_scanner = "ip netns exec " + n->scanner_ns + " ";
+    for (const auto& s : {"ip netns add " + n->scanner_ns, "ip link set " + n->host_if + " netns " + n->scanner_ns,
+                          in_scanner + "ip addr add " + n->host_ip + "/30 dev " + n->host_if,
+                          in_scanner + "ip link set " + n->host_if + " up", in_scanner + "ip link set lo up"})
+      all_steps.push_back(s);
+  }
+  for (const auto& s : all_steps)
     if (!run(s)) {
       why = "cannot build the test network (`" + s + "` failed): namespaces are not available here";
       return nullptr;  // the destructor removes what was made
@@ -198,6 +213,7 @@ test_network::~test_network() {
   held_lock building{lock_file(std::string(lock_dir) + "/build.lock", true)};
   if (!ns.empty()) run("ip netns del " + ns);
   if (!host_if.empty()) run("ip link del " + host_if);
+  if (!scanner_ns.empty()) run("ip netns del " + scanner_ns);
   std::error_code ec;
   if (!dir.empty()) fs::remove_all(dir, ec);
   if (claim_ >= 0) ::close(claim_);
@@ -209,6 +225,24 @@ pid_t test_network::spawn(const std::vector<std::string>& argv, const std::strin
   full.insert(full.end(), argv.begin(), argv.end());
   const auto pid = spawn_logged(std::move(full), dir + "/" + log_name, dir);
   if (pid > 0) children_.push_back(pid);
+  return pid;
+}
+
+pid_t test_network::spawn_scanner(const std::vector<std::string>& argv, const std::string& log_name) {
+  if (scanner_ns.empty()) return spawn(argv, log_name);
+  std::vector<std::string> full = {"ip", "netns", "exec", scanner_ns};
+  full.insert(full.end(), argv.begin(), argv.end());
+  const auto pid = spawn_logged(std::move(full), dir + "/" + log_name, dir);
+  if (pid > 0) children_.push_back(pid);
+  return pid;
+}
+
+pid_t test_network::capture(const std::string& pcap, bool scanner_side) {
+  const std::vector<std::string> argv = {"tcpdump", "-i", scanner_side ? host_if : dev_if, "--immediate-mode", "-U",
+                                         "-n", "-B", "8192", "-w", pcap};
+  const auto pid = scanner_side ? spawn_scanner(argv, "tcpdump.log") : spawn(argv, "tcpdump.log");
+  for (int i = 0; pid > 0 && i < 200 && shell("grep -q listening " + dir + "/tcpdump.log").status != 0; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
   return pid;
 }
 
@@ -224,6 +258,9 @@ pid_t test_network::start_device(const std::vector<std::string>& argv, const std
     return -1;
   }
   // Generous: the device is not under the sanitizers, but the machine may be busy.
+  // Asked from where the host's end is: this host, or the scanner's namespace.
+  std::optional<thread_in_namespace> from;
+  if (!scanner_ns.empty()) from.emplace(scanner_ns);
   for (int i = 0; i < 300; ++i) {
     if (tcp_answers(device_ip, 44818)) return pid;
     int st = 0;
@@ -252,6 +289,24 @@ void test_network::stop(pid_t pid, int first_signal) {
   ::kill(pid, SIGKILL);
   int st = 0;
   ::waitpid(pid, &st, 0);
+}
+
+thread_in_namespace::thread_in_namespace(const std::string& name) {
+  home_ = ::open("/proc/thread-self/ns/net", O_RDONLY | O_CLOEXEC);
+  const int target = ::open(("/run/netns/" + name).c_str(), O_RDONLY | O_CLOEXEC);
+  const bool ok = home_ >= 0 && target >= 0 && ::setns(target, CLONE_NEWNET) == 0;
+  if (target >= 0) ::close(target);
+  if (!ok) {
+    ADD_FAILURE() << "cannot enter the network namespace " << name << ": " << std::strerror(errno);
+    if (home_ >= 0) ::close(home_);
+    home_ = -1;
+  }
+}
+
+thread_in_namespace::~thread_in_namespace() {
+  if (home_ < 0) return;
+  (void)::setns(home_, CLONE_NEWNET);
+  ::close(home_);
 }
 
 }  // namespace edsc::live_test

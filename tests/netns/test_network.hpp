@@ -32,6 +32,10 @@ struct network_options {
   // /30 numbers of 198.51.100.0/24 (1-63; 0 is never given out: it holds
   // the address no test may reach).
   int first_subnet = 1, last_subnet = 15;
+  // The host's end of the veth pair in a namespace of its own as well
+  // (`<ns>-s`), for a scanner that binds UDP 2222 on every address of its
+  // host: there it meets no other test's scanner.
+  bool scanner_namespace = false;
 };
 
 // A TEST-NET-2 address outside every test network: unreachable while any exists.
@@ -58,13 +62,38 @@ class test_network {
   // `first_signal`, then SIGKILL after a grace period; reaps it.
   void stop(pid_t pid, int first_signal = 15);
 
+  // Spawns `argv` in the scanner's namespace (a scanner_namespace network
+  // only); as spawn() otherwise.
+  pid_t spawn_scanner(const std::vector<std::string>& argv, const std::string& log_name);
+
+  // tcpdump writing `pcap` from the device's interface, or the host's end in
+  // the scanner's namespace; returns once it listens (at most 10 s): its
+  // pid, or -1. Stop it with SIGINT so the file is whole.
+  pid_t capture(const std::string& pcap, bool scanner_side = false);
+
   std::string ns, host_if, dev_if, host_ip, device_ip, dir;
+  std::string scanner_ns;  // where host_if and host_ip are; "" : this host
   int subnet = -1;  // the /30's number: host .4n+1, device .4n+2
 
  private:
   test_network() = default;
   std::vector<pid_t> children_;
   int claim_ = -1;  // the lock file held while the network exists
+};
+
+// The calling thread in the named namespace (of /run/netns) for its life:
+// sockets it opens meanwhile are that namespace's. A thread, not the
+// process: the test's other threads and the commands it runs keep theirs.
+class thread_in_namespace {
+ public:
+  explicit thread_in_namespace(const std::string& name);
+  ~thread_in_namespace();
+  thread_in_namespace(const thread_in_namespace&) = delete;
+  thread_in_namespace& operator=(const thread_in_namespace&) = delete;
+  [[nodiscard]] bool entered() const { return home_ >= 0; }
+
+ private:
+  int home_ = -1;
 };
 
 }  // namespace edsc::live_test
