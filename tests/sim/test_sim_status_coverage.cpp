@@ -1,5 +1,5 @@
 // Every status edsc names — the encapsulation, general and extended
-// statuses of compiler/cip/status.cpp's tables — has a row here: either a
+// statuses of compiler/cip/codes.def — has a row here: either a
 // request written by hand that makes `edsc sim` (on OpENer's EDS) answer
 // exactly that status, or the reason the simulator never sends it. A status
 // the simulator's sources name must have a request; a status a row says is
@@ -345,17 +345,22 @@ std::string read(const fs::path& p) {
   return s.str();
 }
 
-// The codes of one `entry<...> NAME[] = {...};` table of status.cpp.
-std::set<unsigned> table_codes(const std::string& text, const std::string& name) {
-  std::set<unsigned> codes;
-  const auto at = text.find(name + "[] = {");
-  if (at == std::string::npos) return codes;
-  const auto end = text.find("};", at);
-  const std::string body = text.substr(at, end - at);
-  static const std::regex entry(R"(\{0x([0-9A-Fa-f]+),)");
-  for (std::sregex_iterator it(body.begin(), body.end(), entry), e; it != e; ++it)
-    codes.insert(static_cast<unsigned>(std::stoul((*it)[1], nullptr, 16)));
-  return codes;
+// A status of cip/codes.def: its code and its enumerator's name.
+struct named_status {
+  unsigned code;
+  std::string symbol;
+};
+
+std::map<layer, std::vector<named_status>> codes_def() {
+  std::map<layer, std::vector<named_status>> all;
+#define ENCAP_STATUS(sym, code, words) all[layer::encap].push_back({code, #sym});
+#define GENERAL_STATUS(sym, code, words) all[layer::general].push_back({code, #sym});
+#define EXTENDED_STATUS(sym, code, words) all[layer::extended].push_back({code, #sym});
+#include "cip/codes.def"
+#undef ENCAP_STATUS
+#undef GENERAL_STATUS
+#undef EXTENDED_STATUS
+  return all;
 }
 
 // Every source of the simulator, as one text.
@@ -366,50 +371,51 @@ std::string simulator_sources() {
   return all;
 }
 
-// The two-digit codes a `namespace general { ... }` of the simulator names.
-std::set<unsigned> simulator_general_codes(const std::string& sources) {
-  std::set<unsigned> codes;
-  const auto at = sources.find("namespace general {");
-  if (at == std::string::npos) return codes;
-  const auto body = sources.substr(at, sources.find('}', at) - at);
-  static const std::regex value(R"(= 0x([0-9A-Fa-f]{2})\b)");
-  for (std::sregex_iterator it(body.begin(), body.end(), value), e; it != e; ++it)
-    codes.insert(static_cast<unsigned>(std::stoul((*it)[1], nullptr, 16)));
-  return codes;
+// Whether the simulator's sources name a status by its enumerator, through
+// the enum or the alias the simulator gives it (sim/objects.hpp: general,
+// sim/refusal.hpp: ext, sim/encap.cpp: status).
+bool named_by_simulator(const std::string& sources, layer kind, const std::string& symbol) {
+  const std::vector<std::string> scopes = kind == layer::encap     ? std::vector<std::string>{"encap_status", "status"}
+                                          : kind == layer::general ? std::vector<std::string>{"general_status", "general"}
+                                                                   : std::vector<std::string>{"extended_status", "ext"};
+  for (const auto& scope : scopes) {
+    const std::regex use("\\b" + scope + "::" + symbol + "\\b");
+    if (std::regex_search(sources, use)) return true;
+  }
+  return false;
 }
 
 std::string four_digits(unsigned code) { return fmt::format("0x{:04X}", code); }
 
 TEST(sim_status_coverage, every_named_status_has_a_row_and_every_row_is_honest) {
-  const auto status_cpp = read(fs::path(EDSC_PROJECT_DIR) / "compiler" / "cip" / "status.cpp");
-  const std::map<layer, std::set<unsigned>> named = {
-      {layer::encap, table_codes(status_cpp, "encap_statuses")},
-      {layer::general, table_codes(status_cpp, "general_statuses")},
-      {layer::extended, table_codes(status_cpp, "extended_statuses")},
-  };
-  for (const auto& [kind, codes] : named)
-    ASSERT_GT(codes.size(), 5u) << "compiler/cip/status.cpp: the " << layer_name(kind)
-                                << " table was not found where this test reads it";
+  const auto table = codes_def();
+  std::map<layer, std::set<unsigned>> named;
+  std::map<std::pair<layer, unsigned>, std::string> symbol;
+  for (const auto& [kind, statuses] : table)
+    for (const auto& st : statuses) {
+      named[kind].insert(st.code);
+      symbol[{kind, st.code}] = st.symbol;
+    }
+  for (const auto kind : {layer::encap, layer::general, layer::extended})
+    ASSERT_GT(named[kind].size(), 5u) << "cip/codes.def: too few " << layer_name(kind) << " statuses read";
   std::map<layer, std::set<unsigned>> have;
   for (const auto& r : rows()) {
     EXPECT_TRUE(have[r.kind].insert(r.code).second) << layer_name(r.kind) << " " << four_digits(r.code) << " twice";
     EXPECT_TRUE(named.at(r.kind).count(r.code)) << layer_name(r.kind) << " " << four_digits(r.code)
-                                                << " has a row but is not in status.cpp";
+                                                << " has a row but is not in cip/codes.def";
     EXPECT_NE(static_cast<bool>(r.produce), *r.reason != 0)
         << four_digits(r.code) << ": a row has a request or a reason, not both or neither";
   }
   for (const auto& [kind, codes] : named)
     for (const auto c : codes)
       EXPECT_TRUE(have[kind].count(c)) << layer_name(kind) << " status " << four_digits(c)
-                                       << " of status.cpp has no row: a request that produces it, or why none does";
+                                       << " of cip/codes.def has no row: a request that produces it, or why none does";
 
   // What the simulator's sources name must be produced; what a row says is never sent, they must not name.
   const auto sources = simulator_sources();
-  const auto general = simulator_general_codes(sources);
-  ASSERT_GT(general.size(), 5u) << "the simulator's `namespace general` was not found under compiler/sim";
   for (const auto& r : rows()) {
-    const bool named_by_sim = r.kind == layer::general ? general.count(r.code) > 0
-                                                       : sources.find(four_digits(r.code)) != std::string::npos;
+    const auto sym = symbol.find({r.kind, r.code});
+    const bool named_by_sim = sym != symbol.end() && named_by_simulator(sources, r.kind, sym->second);
     if (r.code == 0) continue;  // success needs no name
     if (named_by_sim) {
       EXPECT_TRUE(r.produce) << layer_name(r.kind) << " " << four_digits(r.code)
