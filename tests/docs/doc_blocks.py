@@ -127,7 +127,8 @@ def parse_commands(b):
         n, t = lines[k]
         s = t.strip()
         if prompt and s.startswith("$ "):
-            text, k = _joined([(n, s[2:])] + lines[k + 1:], 0)[0], k + _joined([(n, s[2:])] + lines[k + 1:], 0)[1]
+            text, used = _joined([(n, s[2:])] + lines[k + 1:], 0)
+            k += used
             out = []
             k += 1
             while k < len(lines) and not lines[k][1].strip().startswith("$ "):

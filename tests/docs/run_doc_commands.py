@@ -291,9 +291,8 @@ def matches(expected, actual):
     """The docs' lines against the output: `...` alone any lines, `...` in a
     line any text, a run of spaces any run of spaces."""
     lines = actual.rstrip("\n").split("\n") if actual.strip() else []
-    exp = [l for l in expected]
     pattern = []
-    for e in exp:
+    for e in expected:
         if e.strip() == "...":
             pattern.append(r"(?:[^\n]*\n)*?")
             continue
