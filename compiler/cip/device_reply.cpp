@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "source/utf8.hpp"
 
 namespace edsc::cip {
 
@@ -33,7 +32,7 @@ void put_identity_fields(bytes& b, const identity& id) {
   put_u8(b, id.minor);
   put_u16(b, id.status);
   put_u32(b, id.serial);
-  const auto name = utf8::cut(id.product_name, max_product_name);
+  const auto name = held_product_name(id.product_name);
   put_u8(b, static_cast<std::uint8_t>(name.size()));
   for (const char c : name) put_u8(b, static_cast<std::uint8_t>(c));
 }

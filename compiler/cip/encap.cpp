@@ -5,8 +5,11 @@
 #include <fmt/format.h>
 
 #include "diag/plural.hpp"
+#include "source/utf8.hpp"
 
 namespace edsc::cip {
+
+std::string_view held_product_name(std::string_view prod_name) { return utf8::cut(prod_name, max_product_name); }
 
 void read_identity_fields(reader& r, identity& id) {
   id.vendor = r.u16("vendor id");

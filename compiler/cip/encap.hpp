@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cip/bytes.hpp"
@@ -82,6 +83,10 @@ struct unit_data {
 // (its length is one USINT of bytes; a byte is a character of the device's
 // 8-bit string, so UTF-8 text takes more than one per character).
 inline constexpr std::size_t max_product_name = 32;
+// The Product Name a device holds for a ProdName: its first 32 bytes, cut
+// between two characters. The header, the OpENer stack and the simulator
+// serve it, and verify --live compares with it.
+[[nodiscard]] std::string_view held_product_name(std::string_view prod_name);
 
 struct identity {
   std::uint16_t encap_version = 0;

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "diag/plural.hpp"
 #include "doc/markup.hpp"
 #include "doc/render.hpp"
 #include "edsc_version.hpp"
@@ -99,7 +100,6 @@ void header_html(std::string& out, const sheet& s, const page_options& opt) {
   if (!s.sum.networks.empty()) chip(s.sum.networks, "net");
   if (!s.sum.revision.empty()) chip("Revision " + s.sum.revision, "");
   if (!s.sum.catalog.empty()) chip("Catalog " + s.sum.catalog, "");
-  auto plural = [](std::size_t n, const char* w) { return fmt::format("{} {}{}", n, w, n == 1 ? "" : "s"); };
   if (s.sum.errors > 0) chip(plural(s.sum.errors, "error"), "err");
   if (s.sum.warnings > 0) chip(plural(s.sum.warnings, "warning"), "warn");
   if (s.sum.errors == 0 && s.sum.warnings == 0) chip("edsc: no errors or warnings", "ok");

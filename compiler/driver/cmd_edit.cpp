@@ -121,7 +121,7 @@ void register_edit(CLI::App& app, command_action& run) {
     opt->kinds[o] = what.first;
   }
   add_example(cmd, "edsc edit device.eds --set Device.MajRev=2 --in-place", "change one field, nothing else");
-  add_example(cmd, "edsc edit device.eds --resize Input1=3 -o new.eds", "give a DeviceNet input 3 bytes");
+  add_example(cmd, "edsc edit node.eds --resize Input1=3 -o node-3byte.eds", "give a DeviceNet input 3 bytes");
   cmd->callback([&run, opt, cmd] {
     // Operations run in the order they were written on the command line.
     std::map<op_kind, std::size_t> next;

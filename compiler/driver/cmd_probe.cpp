@@ -226,8 +226,8 @@ void register_probe(CLI::App& app, command_action& run) {
                         "('-': standard output, the report then going to standard error)"),
         arg_kind::output)
       ->type_name("FILE");
-  add_example(cmd, "edsc probe 192.168.1.20 --library eds/", "who the device is, and which EDS files describe it");
-  add_example(cmd, "edsc probe 192.168.1.20 --upload-eds device.eds", "save the EDS the device carries");
+  add_example(cmd, "edsc probe 198.51.100.20 --library eds/", "who the device is, and which EDS files describe it");
+  add_example(cmd, "edsc probe 198.51.100.20 --upload-eds device.eds", "save the EDS the device carries");
   cmd->callback([&run, cli] { run = [cli] { return run_probe(*cli); }; });
 }
 

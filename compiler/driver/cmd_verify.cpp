@@ -216,8 +216,8 @@ void register_verify(CLI::App& app, command_action& run) {
         arg_kind::file);
   add_verify_live_options(cmd, cli->live);
   add_report_options(cmd, cli->color, cli->format, cli->warning_flags);
-  add_example(cmd, "edsc verify device.eds --capture startup.log", "compare a CAN capture with the EDS");
-  add_example(cmd, "edsc verify --live 192.168.1.20 device.eds", "compare a running EtherNet/IP device with its EDS");
+  add_example(cmd, "edsc verify node.eds --capture startup.log", "compare a CAN capture with the EDS");
+  add_example(cmd, "edsc verify --live 198.51.100.20 device.eds", "compare a running EtherNet/IP device with its EDS");
   cmd->callback([&run, cli, cmd] { run = [cli, cmd] { return run_verify(*cli, *cmd); }; });
 }
 

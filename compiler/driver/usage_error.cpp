@@ -144,6 +144,21 @@ std::string extras(const reading& r) {
                      help_command(r.cmd));
 }
 
+// `-q=3`: CLI11 reads -q, then the word '-=3'. A short flag given a value
+// is said as --json=maybe is.
+std::optional<std::string> short_flag_value(const reading& r, int argc, const char* const* argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    if (arg == "--") break;
+    if (arg.size() < 3 || arg[0] != '-' || arg[1] == '-' || arg[2] != '=') continue;
+    const auto name = std::string("-") + arg[1];
+    const auto* opt = r.cmd.get_option_no_throw(name);
+    if (opt != nullptr && opt->get_items_expected_max() == 0)
+      return fmt::format("{} takes no value (given '{}')", r.shown(name), arg.substr(3));
+  }
+  return std::nullopt;
+}
+
 // By type, not by get_name(): CLI11 names some errors after the command
 // that threw them.
 template <typename T>
@@ -176,7 +191,10 @@ std::optional<std::string> rewritten(const CLI::ParseError& e, const reading& r)
 std::string usage_message(const CLI::ParseError& e, const CLI::App& app, int argc, const char* const* argv) {
   if (auto hint = option_hint(app, argc, argv)) return *hint;
   const std::string what = e.what();
-  return rewritten(e, reading{command_named(app, argc, argv), what}).value_or(what);
+  const reading r{command_named(app, argc, argv), what};
+  if (is<CLI::ExtrasError>(e))
+    if (auto flag = short_flag_value(r, argc, argv)) return *flag;
+  return rewritten(e, r).value_or(what);
 }
 
 }  // namespace edsc::driver

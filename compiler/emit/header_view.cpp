@@ -7,7 +7,6 @@
 #include "emit/header_parts.hpp"
 #include "emit/header_view.hpp"
 #include "emit/sha256.hpp"
-#include "source/utf8.hpp"
 
 namespace edsc::emit {
 
@@ -45,7 +44,7 @@ identity_facts collect_identity(const model::device_info& d, std::vector<header_
   // type, code and major revision, so a shortened name is harmless. It ends
   // between two characters, so the device never shows half of one.
   if (id.product_name.size() > cip::max_product_name) {
-    const auto kept = utf8::cut(id.product_name, cip::max_product_name).size();
+    const auto kept = cip::held_product_name(id.product_name).size();
     issues.push_back({false, fmt::format("[Device] ProdName is {} bytes; the Identity object's Product Name holds at "
                                          "most {}, so the header carries its first {}{}",
                                          id.product_name.size(), cip::max_product_name, kept,

@@ -185,6 +185,16 @@ std::vector<connection_plan> plan_connections(const model::device& dev) {
   return out;
 }
 
+namespace {
+
+std::optional<std::uint32_t> given_size(const model::device& dev, const model::assembly* a) {
+  const auto n = emit::assembly_size(dev, a);
+  if (n == 0 && !a->size.is_integer()) return std::nullopt;
+  return n;
+}
+
+}  // namespace
+
 std::vector<assembly_target> plan_assemblies(const model::device& dev) {
   std::vector<assembly_target> out;
   auto add = [&](const model::assembly* a, std::uint32_t instance, const model::value& path, const model::origin& entry) {
@@ -192,7 +202,7 @@ std::vector<assembly_target> plan_assemblies(const model::device& dev) {
     for (const auto& t : out)
       if (t.assem == a) return;
     const auto where = path.present() && !path.from.where.empty() ? path.from.where : entry.where;
-    out.push_back({a, instance, emit::assembly_size(dev, a), where});
+    out.push_back({a, instance, given_size(dev, a), where});
   };
   for (const auto& a : dev.assemblies) {
     if (a.kind != model::assembly_kind::assem) continue;

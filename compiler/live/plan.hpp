@@ -39,7 +39,9 @@ struct connection_plan {
 struct assembly_target {
   const model::assembly* assem = nullptr;
   std::uint32_t instance = 0;
-  std::uint32_t eds_size = 0;  // bytes
+  // Bytes; none when the EDS gives no size (an empty size field and no
+  // member of any bits), which is not a size of 0.
+  std::optional<std::uint32_t> eds_size;
   span named_at;               // the path that gives the instance (the assembly's own, or a connection's)
 };
 [[nodiscard]] std::vector<assembly_target> plan_assemblies(const model::device& dev);

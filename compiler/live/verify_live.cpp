@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "cip/encap.hpp"
 #include "cip/status.hpp"
 #include "diag/plural.hpp"
 #include "live/interrupt.hpp"
@@ -98,7 +99,8 @@ struct checker {
       row("MajRev/MinRev", "(not numbers)", dev_rev, verdict::not_tried);
     }
     if (d.prod_name.ok()) {
-      const bool same = d.prod_name.text == id.product_name;
+      // The device holds at most 32 bytes of it, as the header and the simulator cut it.
+      const bool same = cip::held_product_name(d.prod_name.text) == id.product_name;
       row("ProdName", fmt::format("\"{}\"", d.prod_name.text), fmt::format("\"{}\"", id.product_name),
           same ? verdict::match : verdict::mismatch);
       if (!same)
@@ -128,18 +130,19 @@ struct checker {
     for (std::size_t i = 0; i < targets.size(); ++i) {
       const auto& t = targets[i];
       const auto check = fmt::format("{} size (instance {})", assem_name(*t.assem), t.instance);
-      if (halted(check, std::to_string(t.eds_size))) continue;
+      const auto eds_size = t.eds_size ? std::to_string(*t.eds_size) : std::string("(not given)");
+      if (halted(check, eds_size)) continue;
       step(fmt::format("reading the size of assembly instance {} ({} of {})", t.instance, i + 1, targets.size()));
       auto r = s.request(cip::service::get_attribute_single, cip::logical_path(cip::class_id::assembly, t.instance, 4));
-      if (auto* e = failed(r)) return lost(*e, check, std::to_string(t.eds_size));
+      if (auto* e = failed(r)) return lost(*e, check, eds_size);
       const auto& rep = std::get<cip::reply>(r);
       const auto where = at(t.assem->size, t.assem->from);
       // Path destination unknown is OpENer's answer.
       if (rep.is(cip::general_status::path_destination_unknown) || rep.is(cip::general_status::object_does_not_exist)) {
         auto known = assembly_class_answers(s);
-        if (auto* e = failed(known)) return lost(*e, check, std::to_string(t.eds_size));
+        if (auto* e = failed(known)) return lost(*e, check, eds_size);
         if (std::get<bool>(known)) {
-          row(check, std::to_string(t.eds_size), "no such instance", verdict::mismatch);
+          row(check, eds_size, "no such instance", verdict::mismatch);
           diag(diag_id::live_assembly_missing, t.named_at,
                fmt::format("the device has no assembly instance {} ({}), which {} says it has", t.instance,
                            cip::describe_status(rep.general, rep.additional), assem_name(*t.assem)));
@@ -149,19 +152,27 @@ struct checker {
       if (rep.general != 0 || rep.data.size() < 2) {
         const auto why = rep.general != 0 ? cip::describe_status(rep.general, rep.additional)
                                           : std::string("a reply without the size");
-        row(check, std::to_string(t.eds_size), "not readable", verdict::not_readable);
+        row(check, eds_size, "not readable", verdict::not_readable);
         diag(diag_id::live_not_checked, where,
              fmt::format("{}: the device does not give the size of assembly instance {} ({})", assem_name(*t.assem),
                          t.instance, why));
         continue;
       }
       const unsigned size = rep.data[0] | (rep.data[1] << 8);
+      if (!t.eds_size) {
+        // No size in the EDS is not a size of 0: say what the device holds.
+        row(check, eds_size, std::to_string(size), verdict::not_tried);
+        diag(diag_id::live_not_checked, where,
+             fmt::format("{} gives no size; the device holds {} in assembly instance {}", assem_name(*t.assem),
+                         plural(size, "byte"), t.instance));
+        continue;
+      }
       // Attribute 4 is in bytes; a device may count words (an older reading): accept neither silently.
-      row(check, std::to_string(t.eds_size), std::to_string(size), size == t.eds_size ? verdict::match : verdict::mismatch);
-      if (size != t.eds_size)
+      row(check, eds_size, std::to_string(size), size == *t.eds_size ? verdict::match : verdict::mismatch);
+      if (size != *t.eds_size)
         diag(diag_id::live_assembly_size, where,
              fmt::format("assembly instance {} holds {} on the device, {} says {}", t.instance, plural(size, "byte"),
-                         assem_name(*t.assem), t.eds_size));
+                         assem_name(*t.assem), *t.eds_size));
     }
     return std::nullopt;
   }

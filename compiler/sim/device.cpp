@@ -128,7 +128,7 @@ device build_device(const model::device& dev, std::uint32_t serial) {
     auto segs = cip::decode_path(cp.app_path, 0);
     if (segs) cp.segments = segs.value();
   }
-  for (const auto& t : live::plan_assemblies(dev)) add_assembly(d, t.instance, t.eds_size, assembly_role::other);
+  for (const auto& t : live::plan_assemblies(dev)) add_assembly(d, t.instance, t.eds_size.value_or(0), assembly_role::other);
   std::sort(d.assemblies.begin(), d.assemblies.end(),
             [](const auto& a, const auto& b) { return a.instance < b.instance; });
   add_parameters(dev, d);

@@ -134,3 +134,26 @@ TEST_F(Cli, OutputIsTheSameWhateverTheNumberOfJobs) {
 }
 
 }  // namespace
+
+// `edsc rules GROUP` lists the group's rules (header.md sends readers to
+// `edsc rules opener`), the same rows as the whole list holds.
+TEST_F(Cli, RulesOfOneGroup) {
+  const auto all = run_edsc({"rules"});
+  ASSERT_EQ(all.status, 0);
+  std::string expected;
+  std::istringstream rows(all.output);
+  for (std::string row; std::getline(rows, row);) {
+    std::istringstream cells(row);
+    std::string id, level, group;
+    cells >> id >> level >> group;
+    if (group == "opener") expected += row + "\n";
+  }
+  ASSERT_FALSE(expected.empty());
+  const auto opener = run_edsc({"rules", "opener"});
+  EXPECT_EQ(opener.status, 0) << opener.output;
+  EXPECT_EQ(opener.output, expected);
+  const auto none = run_edsc({"rules", "openr"});
+  EXPECT_EQ(none.status, 2);
+  EXPECT_NE(none.output.find("no diagnostic or group named 'openr'; did you mean 'opener'?"), std::string::npos)
+      << none.output;
+}

@@ -1,6 +1,8 @@
 // docs/cli.md is the complete command reference: every command `edsc --help`
 // lists has its section, and every option its --help shows is named in that
 // section, so the two cannot drift apart.
+#include <set>
+
 #include "cli/cli_support.hpp"
 #include "test_paths.hpp"
 
@@ -60,6 +62,15 @@ TEST(CliReference, EveryCommandAndOptionOfHelpIsInCliMd) {
   const auto paths = command_paths();
   ASSERT_GE(paths.size(), 14u);  // the 13 commands, net as two
   for (const auto& path : paths) {
+    // One section a form of a command (`verify FILE.eds`, `verify --live`):
+    // a second would say other things of it.
+    const std::string head = "\n## `edsc " + path + " ";
+    std::set<std::string> forms;
+    for (auto at = doc.find(head); at != std::string::npos; at = doc.find(head, at + 1)) {
+      const auto from = at + head.size();
+      const auto form = doc.substr(from, doc.find_first_of(" `", from) - from);
+      EXPECT_TRUE(forms.insert(form).second) << "docs/cli.md has two sections for `edsc " << path << " " << form << "`";
+    }
     const auto section = cli_md_section(doc, path);
     if (section.empty()) {
       ADD_FAILURE() << "docs/cli.md has no section '## `edsc " << path << " ...`'";

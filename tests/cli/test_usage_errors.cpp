@@ -3,6 +3,11 @@
 // "input is required", "--output excludes --in-place", "Could not convert"):
 // each kind of error the command line can produce, and then every command
 // and option of the model given wrongly.
+#include <unistd.h>
+
+#include <regex>
+#include <set>
+
 #include <fmt/format.h>
 
 #include "cli/cli_model_support.hpp"
@@ -54,6 +59,9 @@ TEST(UsageErrors, EachKindIsSaidInEdscsWords) {
       {{"fmt", "-i", "-o", "x", eds}, "edsc: error: -o/--output and -i/--in-place cannot be given together\n"},
       // A value for a flag; a value that is not one of the choices.
       {{"dump", eds, "--json=maybe"}, "edsc: error: --json takes no value (given 'maybe')\n"},
+      // The same through a short flag: CLI11 splits `-q=3` into -q and a word '-=3'.
+      {{"fix", "-q=3", eds}, "edsc: error: -q/--quiet takes no value (given '3')\n"},
+      {{"fmt", eds, "-i=yes"}, "edsc: error: -i/--in-place takes no value (given 'yes')\n"},
       {{"check", "--format", "xml", eds}, "edsc: error: --format: 'xml' is not one of text|json|sarif\n"},
       // Words no argument takes.
       {{"dump", eds, "b.eds", "c.eds"},
@@ -117,3 +125,45 @@ TEST(UsageErrors, EveryOptionGivenWronglyIsSaidInEdscsWords) {
 }
 
 }  // namespace
+
+// What `new` tells a user to give names options `new` has (the model's), so
+// a renamed option cannot leave its old name in a message.
+TEST(UsageErrors, NewNamesOnlyOptionsItHas) {
+  std::set<std::string> longs;
+  each_command(cli_model(), [&](const nlohmann::json& c) {
+    if (c.at("path") != "new") return;
+    for (const auto& o : c.at("options"))
+      for (const auto& l : o.at("longs")) longs.insert(l.get<std::string>());
+  });
+  ASSERT_TRUE(longs.contains("--input-bytes"));
+  const auto dir = std::filesystem::temp_directory_path() / fmt::format("edsc-new-words-{}", ::getpid());
+  std::filesystem::create_directories(dir);
+  const auto json = (dir / "partial.json").string();
+  std::ofstream(json) << R"({"vendor": 1})";
+  const std::vector<std::string> id{"--vendor", "1", "--product-type", "7", "--product-code", "1", "--name", "x"};
+  auto with = [&](std::vector<std::string> more) {
+    auto args = std::vector<std::string>{"new"};
+    args.insert(args.end(), id.begin(), id.end());
+    args.insert(args.end(), more.begin(), more.end());
+    return args;
+  };
+  const std::vector<std::vector<std::string>> cases{
+      {"new", "--from", json},
+      {"new", "--vendor", "1"},
+      with({}),
+      with({"--network", "ethernetip", "--input-bytes", "2"}),
+      with({"--product-type", "9999"}),
+      with({"--input-bytes", "2", "-o", "4"}),
+      with({"--input-bytes", "2", "--name", ""}),
+  };
+  const std::regex option("--[a-z][a-z-]*");
+  for (const auto& args : cases) {
+    const auto r = run_edsc(args);
+    EXPECT_NE(r.status, 0) << command_line(args);
+    std::size_t named = 0;
+    for (std::sregex_iterator m(r.output.begin(), r.output.end(), option), end; m != end; ++m, ++named)
+      EXPECT_TRUE(longs.contains(m->str())) << command_line(args) << ": names " << m->str() << "\n" << r.output;
+    EXPECT_GT(named, 0u) << command_line(args) << "\n" << r.output;
+  }
+  std::filesystem::remove_all(dir);
+}

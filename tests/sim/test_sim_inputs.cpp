@@ -10,6 +10,7 @@
 
 #include "edit/analyze.hpp"
 #include "netns/live_support.hpp"
+#include "live/loopback_server.hpp"
 #include "netns/run_edsc.hpp"
 #include "netns/test_network.hpp"
 #include "sim_eds.hpp"
@@ -169,10 +170,14 @@ TEST(sim_inputs_numbers, hex_takes_a_sign_and_must_be_whole) {
   EXPECT_TRUE(n("1.5")->is_real);
 }
 
+// In a network namespace of the test's own: should edsc open its sockets
+// after all, they meet no other test's 127.0.0.1.
+class sim_inputs_cli : public live_test::loopback_test {};
+
 // The command refuses a file that does not fit before it opens a socket:
 // exit status 2 and a diagnostic of the project's renderer (place, severity,
 // rule id, the line and a caret).
-TEST(sim_inputs_cli, a_bad_inputs_file_stops_edsc_sim_with_its_place) {
+TEST_F(sim_inputs_cli, a_bad_inputs_file_stops_edsc_sim_with_its_place) {
   const auto dir = std::filesystem::temp_directory_path() / ("edsc-sim-inputs-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const auto eds = (dir / "inputs.eds").string(), toml = (dir / "bad.toml").string();

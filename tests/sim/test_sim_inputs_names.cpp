@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "edit/analyze.hpp"
+#include "live/loopback_server.hpp"
 #include "netns/live_support.hpp"
 #include "netns/run_edsc.hpp"
 #include "netns/test_network.hpp"
@@ -117,8 +118,11 @@ TEST_F(sim_inputs_twice, a_field_or_an_assembly_named_twice_is_located) {
             "2:2 sim-inputs-syntax: \"100\" names instance 100 a second time (first on line 1)");
 }
 
+// In a network namespace of the test's own, so 127.0.0.1 is no other test's.
+class sim_inputs_names_cli : public live_test::loopback_test {};
+
 // A folder given as --inputs: an error in words, exit 2, no internal error.
-TEST(sim_inputs_names, a_folder_as_the_inputs_file_is_an_error_in_words) {
+TEST_F(sim_inputs_names_cli, a_folder_as_the_inputs_file_is_an_error_in_words) {
   const auto dir = std::filesystem::temp_directory_path() / ("edsc-sim-inputs-dir-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   // An address no interface holds: a simulator that got past the check

@@ -17,15 +17,17 @@ namespace edsc::stack_test {
 // the ones above (tests/netns/test_network.hpp).
 inline const live_test::network_options stack_net{"edsc-stack-", "ek", 32, 62};
 
-// An EDS of `edsc new` in <stack root>/<name>/device.eds.
-inline std::string new_eds(const std::string& name, const std::string& args) {
+// An EDS of `edsc new` in <stack root>/<name>/device.eds; with `rpi`, its
+// connection's RPI fields say 20 ms, else they stay empty (no limit).
+inline std::string new_eds(const std::string& name, const std::string& args, bool rpi = true) {
   namespace fs = std::filesystem;
   const auto dir = fs::path(stack_root()) / name;
   fs::create_directories(dir);
   const auto path = (dir / "device.eds").string();
   const auto r = run_edsc("new --network ethernetip --date 01-01-2026 " + args + " -o " + quoted(path) + " --force");
   EXPECT_EQ(r.status, 0) << r.output;
-  // `edsc new` leaves the RPIs to the user; a scanner needs one to open the connection.
+  if (!rpi) return path;
+  // `edsc new` leaves the RPIs to the user.
   const auto e = run_edsc("edit " + quoted(path) + " --in-place --set 'Connection Manager.Connection1.ot_rpi=20000'"
                           " --set 'Connection Manager.Connection1.to_rpi=20000'");
   EXPECT_EQ(e.status, 0) << e.output;

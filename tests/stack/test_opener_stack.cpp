@@ -62,6 +62,20 @@ TEST_F(opener_stack, an_eds_of_edsc_new_builds_and_follows_an_edited_input_size)
   EXPECT_TRUE(row_matches(out, "Connection1 ", "frames of 20 B")) << out;
 }
 
+// An empty RPI field sets no limit: the device accepts the connection at the
+// RPI the scanner picks (as 48 files of the corpora write it).
+TEST_F(opener_stack, a_connection_whose_eds_leaves_the_rpi_empty_is_accepted) {
+  const auto eds = new_eds("no-rpi", "--vendor 4244 --product-type 12 --product-code 5 --name 'no RPI' "
+                                     "--input-bytes 4 --output-bytes 4",
+                           false);
+  const auto dump = run_edsc("dump " + quoted(eds)).output;
+  ASSERT_NE(dump.find("\"ot_rpi\": null"), std::string::npos) << dump;
+  ASSERT_NE(dump.find("\"to_rpi\": null"), std::string::npos) << dump;
+  const auto out = build_run_verify("no-rpi", eds);
+  if (out.empty()) return;
+  EXPECT_TRUE(row_matches(out, "Connection1 ", "frames of 4 B")) << out;
+}
+
 TEST_F(opener_stack, a_hostile_name_is_escaped_all_the_way_to_the_identity_object) {
   // Quotes, a comment end, backslashes, a question mark pair and UTF-8.
   const auto eds = new_eds("hostile", R"(--vendor 4243 --product-type 7 --product-code 9 --name 'a"b*/c\\d??=é' )"
