@@ -7,6 +7,7 @@ The map is kept on disk under the key of the tree's contents and built again
 when that changes."""
 import concurrent.futures
 import gzip
+import hashlib
 import json
 import pathlib
 import shutil
@@ -87,7 +88,7 @@ def build_map(project, tree, work, key, jobs, log=print):
     data = {'lines': {}, 'executable': {}, 'functions': {}}
     merged = threading.Lock()
     records = [None] * len(names)
-    tree = pathlib.Path(tree).resolve()
+    reader = Reader(pathlib.Path(tree).resolve())
 
     def one(i):
         name = names[i]
@@ -96,7 +97,7 @@ def build_map(project, tree, work, key, jobs, log=print):
         outcome = ctest.run(build_dir, name, tests[name]['labels'], project.lock,
                             env={'GCOV_PREFIX': str(prefix), 'GCOV_PREFIX_STRIP': '0'})
         t1 = time.time()
-        found = read_counts(prefix, tree)
+        found = reader.read(prefix)
         shutil.rmtree(prefix, ignore_errors=True)
         with merged:
             for rel, (covered, executable, functions) in found.items():
@@ -122,65 +123,118 @@ def build_map(project, tree, work, key, jobs, log=print):
     data['functions'] = {f: sorted(v) for f, v in data['functions'].items()}
     data.update({'key': key, 'tests': records, 'build_seconds': round(built),
                  'run_seconds': round(time.time() - t0), 'built_at': time.strftime('%Y-%m-%d %H:%M:%S')})
-    log(f"coverage runs: {len(names)} tests in {data['run_seconds']} s")
+    log(f"coverage runs: {len(names)} tests in {data['run_seconds']} s, {reader.gcov_runs} gcov runs")
     with gzip.open(map_path(work, key), 'wt') as f:
         json.dump(data, f)
     return CoverageMap(json.loads(json.dumps(data)))
 
 
-def read_counts(prefix, tree, batch=40):
-    """{source relative to tree: (lines run, lines with code, function ranges)}
-    from the .gcda files a test left under `prefix`."""
-    gcdas = []
-    for gcda in prefix.rglob('*.gcda'):
-        original = pathlib.Path('/') / gcda.relative_to(prefix)
-        gcno = original.with_suffix('.gcno')
-        if gcno.exists() and ran(gcda):
+class Reader:
+    """Reads the .gcda files a test left under its prefix folder. gcov's
+    answer for an object depends only on its notes and its arc counters, and
+    most objects of a test executable ran only their start-up (the same
+    counters in every test of that executable), so each distinct set of
+    counters of an object goes through gcov once."""
+
+    def __init__(self, tree):
+        self.tree = tree
+        self.known = {}  # (object, counters digest) -> {source: (lines run, lines with code, function ranges)}
+        self.lock = threading.Lock()
+        self.gcov_runs = 0
+
+    def read(self, prefix, batch=40):
+        """{source relative to the tree: (lines run, lines with code, function
+        ranges)} from the .gcda files under `prefix`."""
+        found, todo = {}, []
+        for gcda in prefix.rglob('*.gcda'):
+            original = pathlib.Path('/') / gcda.relative_to(prefix)
+            gcno = original.with_suffix('.gcno')
+            if not gcno.exists():
+                continue
+            key = (str(original), counters_digest(gcda))
+            with self.lock:
+                cached = self.known.get(key)
+            if cached is not None:
+                merge(found, cached)
+                continue
             link = gcda.with_suffix('.gcno')
             if not link.exists():
                 link.symlink_to(gcno)
-            gcdas.append(gcda)
-    found = {}
-    for k in range(0, len(gcdas), batch):
-        r = subprocess.run(['gcov', '--json-format', '--stdout', *map(str, gcdas[k:k + batch])], cwd=prefix,
-                           capture_output=True, text=True)
+            todo.append((key, gcda))
+        for k in range(0, len(todo), batch):
+            part = dict(todo[k:k + batch])
+            by_gcda = self.gcov([g for g in part.values()], prefix)
+            with self.lock:
+                self.gcov_runs += 1
+                for key, gcda in part.items():
+                    self.known[key] = by_gcda.get(str(gcda), {})
+            for gcda in part.values():
+                merge(found, by_gcda.get(str(gcda), {}))
+        return found
+
+    def gcov(self, gcdas, prefix):
+        # Only the tree's own sources (-s makes them relative, -r leaves out
+        # the rest): the system's and libraries' headers are most of the
+        # output and none of the mutants.
+        r = subprocess.run(['gcov', '--json-format', '--stdout', '--relative-only', '--source-prefix', str(self.tree),
+                            *map(str, gcdas)], cwd=prefix, capture_output=True, text=True)
+        out = {}
         for line in r.stdout.splitlines():
             if not line.startswith('{'):
                 continue
             doc = json.loads(line)
             cwd = pathlib.Path(doc.get('current_working_directory', '/'))
+            one = out.setdefault(doc.get('data_file', ''), {})
             for f in doc.get('files', []):
-                path = (cwd / f['file']).resolve()
-                try:
-                    rel = path.relative_to(tree).as_posix()
-                except ValueError:
+                rel = self.relative(cwd, f['file'])
+                if rel is None:
                     continue
-                covered, executable, functions = found.setdefault(rel, (set(), set(), set()))
+                covered, executable, functions = one.setdefault(rel, (set(), set(), set()))
                 for ln in f.get('lines', []):
                     executable.add(ln['line_number'])
                     if ln['count'] > 0:
                         covered.add(ln['line_number'])
                 for fn in f.get('functions', []):
                     functions.add((fn['start_line'], fn['end_line']))
-    return found
+        return out
+
+
+    def relative(self, cwd, name):
+        """The tree-relative path of a source gcov names: relative to the
+        compiler's folder (paths made relative by ccache) or, prefix elided,
+        to the tree."""
+        for path in (cwd / name, self.tree / name.lstrip('/')):
+            try:
+                return path.resolve().relative_to(self.tree).as_posix()
+            except ValueError:
+                continue
+        return None
+
+
+def merge(found, more):
+    for rel, (covered, executable, functions) in more.items():
+        a, b, c = found.setdefault(rel, (set(), set(), set()))
+        a |= covered
+        b |= executable
+        c |= functions
 
 
 GCDA_MAGIC = 0x67636461
-ARC_COUNTERS = 0x01a10000
+OBJECT_SUMMARY = 0xa1000000  # runs and the largest count: not what a line's count depends on
 
 
-def ran(gcda):
-    """False when every arc counter of the file is zero (nothing of that
-    object ran: gcov would find nothing). True when in doubt."""
+def counters_digest(gcda):
+    """A digest of the arc counters of a .gcda file (not its run count):
+    what gcov's line counts depend on besides the notes."""
     data = gcda.read_bytes()
     if len(data) < 16 or int.from_bytes(data[0:4], 'little') != GCDA_MAGIC:
-        return True
-    pos = 16  # magic, version, stamp, checksum
+        return hashlib.sha1(data).hexdigest()
+    h = hashlib.sha1(data[4:16])  # version, stamp, checksum
+    pos = 16
     while pos + 8 <= len(data):
         tag = int.from_bytes(data[pos:pos + 4], 'little')
         length = int.from_bytes(data[pos + 4:pos + 8], 'little')
-        body = data[pos + 8:pos + 8 + length]
-        if tag == ARC_COUNTERS and any(body):
-            return True
+        if tag != OBJECT_SUMMARY:
+            h.update(data[pos:pos + 8 + length])
         pos += 8 + length
-    return False
+    return h.hexdigest()
