@@ -74,10 +74,11 @@ class Project:
         return sorted(f for f in r.stdout.split('\0') if f and (self.root / f).is_file())
 
     def key(self):
-        """A hash of every file the build and the tests read (not the runner,
-        its results, nor prose): a coverage map or a test's verdict on the
-        unmutated tree holds for as long as this does not change."""
-        h = hashlib.sha1()
+        """A hash of the builds' options and every file the build and the
+        tests read (not the runner, its results, nor prose): a coverage map or
+        a test's verdict on the unmutated tree holds for as long as this does
+        not change."""
+        h = hashlib.sha1(json.dumps(self.config.get('cmake_args'), sort_keys=True).encode())
         for rel in self.files():
             if any(fnmatch.fnmatch(rel, pattern) for pattern in self.key_ignore):
                 continue
@@ -134,9 +135,7 @@ def build_env():
 
 
 def configure(source, build_dir, args):
-    build_dir = pathlib.Path(build_dir)
-    if (build_dir / 'build.ninja').exists():
-        return
+    """Configures (again: the options may have changed) a build of `source`."""
     r = subprocess.run(['cmake', '-S', str(source), '-B', str(build_dir), '-G', 'Ninja', *args],
                        capture_output=True, text=True, env=build_env())
     if r.returncode != 0:
