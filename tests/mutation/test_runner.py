@@ -59,6 +59,58 @@ class EdscMutants(unittest.TestCase):
         self.assertTrue(any(w.startswith('templates/header_cip.mustache:') for w in listing('templates')))
 
 
+    def test_all_judges_every_module_of_the_config_in_turn(self):
+        r = mutate('--all', '--list')
+        self.assertEqual(r.returncode, 0, r.stderr)
+        listed = [line[3:] for line in r.stdout.splitlines() if line.startswith('== ')]
+        config = json.loads((ROOT / 'tests' / 'mutation' / 'config.json').read_text())
+        self.assertEqual(listed, config['modules'])
+
+
+class TreeKey(unittest.TestCase):
+    """A coverage map or a known-good verdict holds for one key: the tree's
+    files and the builds' options, not the runner's config nor prose."""
+
+    def key_after(self, change):
+        """The key of the fixture (the config and prose ignored, as edsc's
+        config does) before and after `change(root)`."""
+        with tempfile.TemporaryDirectory(prefix='edsc-mutation-key-') as tmp:
+            root = pathlib.Path(tmp) / 'project'
+            shutil.copytree(FIXTURE, root)
+            subprocess.run(['git', 'init', '-q'], cwd=root, check=True)
+            edit_config(root, lambda c: c.update(key_ignore=['*.md', 'tests/mutation/*']))
+            before = project_key(root)
+            change(root)
+            return before, project_key(root)
+
+    def test_the_key_changes_with_the_builds_options(self):
+        before, after = self.key_after(
+            lambda root: edit_config(root, lambda c: c['cmake_args']['release'].append('-DFAKE_OPTION=1')))
+        self.assertNotEqual(before, after)
+
+    def test_the_key_changes_with_a_source_not_with_prose_nor_the_config(self):
+        before, after = self.key_after(lambda root: (root / 'notes.md').write_text('prose\n'))
+        self.assertEqual(before, after)
+        before, after = self.key_after(lambda root: edit_config(root, lambda c: c.update(about='the fixture')))
+        self.assertEqual(before, after)
+        before, after = self.key_after(lambda root: (root / 'lib' / 'more.cpp').write_text('int x;\n'))
+        self.assertNotEqual(before, after)
+
+
+def edit_config(root, change):
+    path = root / 'tests' / 'mutation' / 'config.json'
+    config = json.loads(path.read_text())
+    change(config)
+    path.write_text(json.dumps(config))
+
+
+def project_key(root):
+    r = subprocess.run([sys.executable, '-c', 'import sys; sys.dont_write_bytecode = True; sys.path.insert(0, sys.argv[1]); '
+                        'from mutation import project; print(project.Project(sys.argv[2]).key())',
+                        str(ROOT / 'scripts'), str(root)], capture_output=True, text=True, check=True)
+    return r.stdout.strip()
+
+
 class FixtureRun(unittest.TestCase):
     """One run of scripts/mutate on chosen mutants of the fixture."""
 
