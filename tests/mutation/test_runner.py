@@ -59,6 +59,19 @@ class EdscMutants(unittest.TestCase):
         self.assertTrue(any(w.startswith('templates/header_cip.mustache:') for w in listing('templates')))
 
 
+    def test_every_mutant_of_the_ci_smoke_still_exists(self):
+        # An edit that moves a listed line changes its mutant's id; said here,
+        # in the suite, rather than at CI's last step.
+        listed = [line.split()[:2] for line in (ROOT / 'tests' / 'mutation' / 'smoke.txt').read_text().splitlines()
+                  if line.strip() and not line.lstrip().startswith('#')]
+        self.assertTrue(listed)
+        ids = {}
+        for module, mid in listed:
+            if module not in ids:
+                ids[module] = set(listing(module).values())
+            self.assertTrue(mid in ids[module], f"{module} {mid} of tests/mutation/smoke.txt: no such mutant any more "
+                                            f"(list the new id with scripts/mutate {module} --list)")
+
     def test_all_judges_every_module_of_the_config_in_turn(self):
         r = mutate('--all', '--list')
         self.assertEqual(r.returncode, 0, r.stderr)
