@@ -40,13 +40,6 @@ class live_opener : public opener_device_test {
     EXPECT_EQ(r.status, 0) << r.output;
     return path;
   }
-  // tcpdump on the device's interface into `pcap`, once it listens; its pid.
-  pid_t capture(const std::string& pcap) {
-    const auto dump = net_->spawn({"tcpdump", "-i", net_->dev_if, "--immediate-mode", "-U", "-n", "-B", "8192", "-w", pcap}, "tcpdump.log");
-    for (int i = 0; dump > 0 && i < 200 && shell("grep -q listening " + net_->dir + "/tcpdump.log").status != 0; ++i)
-      std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    return dump;
-  }
 };
 
 // The 1-based line of the first line of `path` holding `needle` after line `from`.
@@ -263,7 +256,7 @@ TEST_F(live_opener, ctrl_c_closes_the_open_connection_on_the_wire) {
   if (shell("command -v tcpdump >/dev/null && command -v tshark >/dev/null").status != 0)
     GTEST_SKIP() << "tcpdump or tshark is missing (Debian packages tcpdump, tshark)";
   const auto pcap = net_->dir + "/interrupted.pcap";
-  const auto dump = capture(pcap);
+  const auto dump = net_->capture(pcap);
   ASSERT_GT(dump, 0);
   edsc_child edsc({"verify", "--live", device(), opener_eds, "--connections", "--watch", "30", "--color", "never"},
                   net_->dir + "/verify.log");
@@ -299,7 +292,7 @@ TEST_F(live_opener, a_captured_session_decodes_in_tshark_with_the_same_identity)
   if (shell("command -v tcpdump >/dev/null && command -v tshark >/dev/null").status != 0)
     GTEST_SKIP() << "tcpdump or tshark is missing (Debian packages tcpdump, tshark)";
   const auto pcap = net_->dir + "/session.pcap";
-  const auto dump = capture(pcap);
+  const auto dump = net_->capture(pcap);
   ASSERT_GT(dump, 0);
   const auto probe = run_edsc("probe " + device() + " --udp --timeout 5 --format json");
   ASSERT_EQ(probe.status, 0) << probe.output;

@@ -65,10 +65,8 @@ TEST_F(sim_device, a_captured_session_decodes_in_tshark_without_malformed_packet
   if (live_test::shell("command -v tcpdump >/dev/null && command -v tshark >/dev/null").status != 0)
     GTEST_SKIP() << "tcpdump or tshark is missing (Debian packages tcpdump, tshark)";
   const auto pcap = net_->dir + "/sim.pcap";
-  const auto dump = net_->spawn({"tcpdump", "-i", net_->dev_if, "--immediate-mode", "-U", "-n", "-B", "8192", "-w", pcap}, "tcpdump.log");
+  const auto dump = net_->capture(pcap);
   ASSERT_GT(dump, 0);
-  for (int i = 0; i < 200 && live_test::shell("grep -q listening " + net_->dir + "/tcpdump.log").status != 0; ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
   const auto probe = run_edsc("probe " + net_->device_ip + " --udp --timeout 5");
   EXPECT_EQ(probe.status, 0) << probe.output;
   const auto r = run_edsc("verify --live " + net_->device_ip + " " + quoted(opener_eds) + " --connections", 60);

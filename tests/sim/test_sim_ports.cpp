@@ -162,11 +162,8 @@ TEST_F(sim_ports, a_capture_decodes_cleanly_in_tshark) {
   std::string why;  // started first: the start-up's probing of TCP 44818 is not in the capture
   ASSERT_GT(net_->start_device({EDSC_BINARY, "sim", opener_eds, "--serial", "123456789"}, "sim-any", why), 0) << why;
   const auto pcap = net_->dir + "/ports.pcap";
-  // A larger capture buffer: a loaded machine must not drop what is judged.
-  const auto dump = net_->spawn({"tcpdump", "-i", net_->dev_if, "--immediate-mode", "-U", "-n", "-B", "8192", "-w", pcap},
-                                "tcpdump.log");
+  const auto dump = net_->capture(pcap);
   ASSERT_GT(dump, 0);
-  log_once("tcpdump.log", "listening");
   const auto cfg12 = net_->dir + "/cfg12.eds";
   ASSERT_EQ(live_test::shell("cp " + quoted(opener_eds) + " " + quoted(cfg12)).status, 0);
   ASSERT_EQ(run_edsc("edit " + quoted(cfg12) + " --in-place --force --set 'Connection Manager.Connection1.target_config_size=12'").status, 0);
