@@ -118,6 +118,10 @@ std::string kind_word(mode_t mode) {
   return "not a regular file, device or pipe";
 }
 
+}  // namespace
+
+namespace detail {
+
 // A character device or FIFO: opened without O_CREAT or O_TRUNC and written.
 // fstat after open makes sure it is still one, so a path swapped for a
 // regular file meanwhile is never written over from its start.
@@ -135,7 +139,7 @@ std::optional<io_error> write_through(const std::string& path, std::string_view 
   return err;
 }
 
-}  // namespace
+}  // namespace detail
 
 void input_set::add(const std::string& path) {
   if (path == "-") return;
@@ -193,7 +197,7 @@ std::optional<io_error> write_output(const std::string& path, std::string_view b
   if (S_ISREG(st.st_mode)) return write_atomically(target, bytes);
   if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)) {
     bool not_a_stream = false;
-    auto err = write_through(path, bytes, not_a_stream);
+    auto err = detail::write_through(path, bytes, not_a_stream);
     if (not_a_stream) return io_error{fmt::format("{}: changed while being written; nothing written", path)};
     return err;
   }

@@ -55,4 +55,13 @@ class input_set {
 // On failure a file at `path` is as it was.
 [[nodiscard]] std::optional<io_error> write_output(const std::string& path, std::string_view bytes);
 
+namespace detail {
+// The written-through case of write_output: `path` was a character device or
+// FIFO when looked at; when what open() finds is no longer one, nothing is
+// written and `not_a_stream` is set. Named here so the race it guards
+// against can be tested without winning it.
+[[nodiscard]] std::optional<io_error> write_through(const std::string& path, std::string_view bytes,
+                                                    bool& not_a_stream);
+}  // namespace detail
+
 }  // namespace edsc::io
