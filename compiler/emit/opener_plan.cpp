@@ -121,6 +121,8 @@ class planner {
               [](const auto& a, const auto& b) { return a.instance < b.instance; });
     if (consumed_.seen) plan.consumed_run_idle = consumed_.run_idle;
     if (produced_.seen) plan.produced_run_idle = produced_.run_idle;
+    for (const auto& a : plan.assemblies)
+      plan.ethernet_buffer_bytes = std::max(plan.ethernet_buffer_bytes, a.size + opener_buffer_headroom);
   }
 
   opener_plan plan;
@@ -153,7 +155,7 @@ class planner {
     }
     if (size > opener_max_assembly_bytes) {
       report(diag_id::opener_assembly_size, where_of(c, size_field),
-             fmt::format("Connection{}: the {} assembly {} has {} bytes; an OpENer I/O frame holds at most {}",
+             fmt::format("Connection{}: the {} assembly {} has {} bytes; an OpENer message holds at most {}",
                          c.number, role, instance, size, opener_max_assembly_bytes));
       return false;
     }

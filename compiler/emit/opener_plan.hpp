@@ -11,10 +11,16 @@
 
 namespace edsc::emit {
 
-// OpENer's Ethernet buffer (PC_OPENER_ETHERNET_BUFFER_SIZE, its CMake default)
-// less the I/O frame's overhead: item count 2, sequenced address item 12,
-// data item header 4, sequence count 2, run/idle header 4.
-inline constexpr std::uint32_t opener_max_assembly_bytes = 512 - 24;
+// OpENer sizes its message buffers by one build option,
+// OPENER_ETHERNET_BUFFER_SIZE (512 bytes unless set). Around an assembly's
+// data a buffer holds at most 64 bytes more: an I/O frame's 24 (item count,
+// sequenced address item, data item header, sequence count, run/idle header)
+// or an explicit message's (encapsulation 24, CPF 16, request path or reply
+// header 10). The generated project raises the option when its largest
+// assembly needs it; the 16-bit encapsulation length bounds it.
+inline constexpr std::uint32_t opener_default_buffer_bytes = 512;
+inline constexpr std::uint32_t opener_buffer_headroom = 64;
+inline constexpr std::uint32_t opener_max_assembly_bytes = 65535 - opener_buffer_headroom;
 
 enum class opener_point_kind : std::uint8_t { exclusive_owner, input_only, listen_only };
 
@@ -38,6 +44,7 @@ struct opener_plan {
   std::vector<opener_point> points;
   unsigned exclusive_owner = 0, input_only = 0, listen_only = 0;
   bool consumed_run_idle = true, produced_run_idle = false;  // OpENer's defaults
+  std::uint32_t ethernet_buffer_bytes = opener_default_buffer_bytes;  // OPENER_ETHERNET_BUFFER_SIZE
 };
 
 // The plan and, in `diags`, what OpENer cannot serve (errors: no files then)

@@ -273,6 +273,16 @@ EDSC_WEAK void edsc_app_cyclic(void) {}
   return s;
 }
 
+// OpENer's message buffers, raised only when an assembly needs more than
+// its default (a project that needs no more reads as before).
+std::string buffer_size(const opener_plan& p) {
+  if (p.ethernet_buffer_bytes <= opener_default_buffer_bytes) return "";
+  return fmt::format(
+      "# The largest assembly and its headers: OpENer's message buffers (default 512 bytes).\n"
+      "set(OPENER_ETHERNET_BUFFER_SIZE {} CACHE STRING \"OpENer's message buffer (EDS assemblies)\" FORCE)\n",
+      p.ethernet_buffer_bytes);
+}
+
 std::string project_cmake(const opener_plan& p) {
   std::string s = banner(p, "#", "#", "");
   s += fmt::format(R"cmake(# A ready project: OpENer's POSIX port with this folder's application instead
@@ -297,7 +307,7 @@ set(OpENer_PLATFORM POSIX CACHE STRING "" FORCE)
 # Run/idle headers are build options in OpENer: these follow the EDS's formats.
 set(OPENER_CONSUMED_DATA_HAS_RUN_IDLE_HEADER {} CACHE BOOL "O->T data has a run/idle header (EDS)" FORCE)
 set(OPENER_PRODUCED_DATA_HAS_RUN_IDLE_HEADER {} CACHE BOOL "T->O data has a run/idle header (EDS)" FORCE)
-
+{}
 # First on every include path OpENer's folders inherit: this folder's
 # opener_user_conf.h is found before the sample application's.
 include_directories(BEFORE "${{CMAKE_CURRENT_LIST_DIR}}")
@@ -307,7 +317,7 @@ add_subdirectory("${{OPENER_SOURCE_DIR}}" opener)
 set_property(TARGET SAMPLE_APP PROPERTY SOURCES "${{CMAKE_CURRENT_LIST_DIR}}/edsc_opener_app.c")
 target_compile_options(SAMPLE_APP PRIVATE -Wall -Wextra $<$<BOOL:${{EDSC_OPENER_WERROR}}>:-Werror>)
 )cmake",
-                   p.consumed_run_idle ? "ON" : "OFF", p.produced_run_idle ? "ON" : "OFF");
+                   p.consumed_run_idle ? "ON" : "OFF", p.produced_run_idle ? "ON" : "OFF", buffer_size(p));
   return s;
 }
 

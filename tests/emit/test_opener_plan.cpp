@@ -224,23 +224,34 @@ TEST(OpenerPlan, InstancesUpTo0xFFFFAreServed) {
             (std::vector<std::string>{"100:16:output", "120:10:configuration", "65535:32:input"}));
 }
 
-TEST(OpenerPlan, AnAssemblyOfExactly488BytesFitsAnOpENerFrame) {
-  // 512-byte Ethernet buffer less 24 bytes of headers: 488 fits, 489 does not.
+TEST(OpenerPlan, OpENersBufferGrowsWithTheLargestAssemblyOnly) {
+  // 64 bytes of headers around the data: 448 fits OpENer's default 512 bytes,
+  // 449 needs 513, and the larger of input and output decides.
+  const auto buffer = [](conn c1) { return plan_connections({c1})->plan.ethernet_buffer_bytes; };
+  EXPECT_EQ(buffer(conn{.to_size = "448", .to_format = ""}), 512u);
+  EXPECT_EQ(buffer(conn{.to_size = "449", .to_format = ""}), 513u);
+  EXPECT_EQ(buffer(conn{.ot_size = "600", .ot_format = "", .to_size = "520", .to_format = ""}), 664u);
+  EXPECT_EQ(buffer(conn{.ot_size = "520", .ot_format = "", .to_size = "600", .to_format = ""}), 664u);
+}
+
+TEST(OpenerPlan, AnAssemblyOverTheEncapsulationLengthIsRefused) {
+  // The 16-bit encapsulation length less 64 bytes of headers: 65471 fits, 65472 does not.
   {
-    conn c1{.to_size = "488", .to_format = ""};
+    conn c1{.to_size = "65471", .to_format = ""};
     const auto c = plan_connections({c1});
     EXPECT_TRUE(c->diags.empty()) << c->diags[0].message;
     EXPECT_EQ(assemblies(c->plan),
-              (std::vector<std::string>{"100:16:output", "120:10:configuration", "130:488:input"}));
+              (std::vector<std::string>{"100:16:output", "120:10:configuration", "130:65471:input"}));
+    EXPECT_EQ(c->plan.ethernet_buffer_bytes, 65535u);
   }
-  conn input_489{.to_size = "489", .to_format = ""};
-  conn output_489{.ot_size = "489", .ot_format = ""};
-  for (const auto& [c1, what] : {std::pair{input_489, "input assembly 130"}, {output_489, "output assembly 100"}}) {
+  conn input_over{.to_size = "65472", .to_format = ""};
+  conn output_over{.ot_size = "65472", .ot_format = ""};
+  for (const auto& [c1, what] : {std::pair{input_over, "input assembly 130"}, {output_over, "output assembly 100"}}) {
     SCOPED_TRACE(what);
     const auto c = plan_connections({c1});
     expect_one(*c, diag_id::opener_assembly_size,
-               fmt::format("Connection1: the {} has 489 bytes; an OpENer I/O frame holds at most 488", what),
-               c->at("489"));
+               fmt::format("Connection1: the {} has 65472 bytes; an OpENer message holds at most 65471", what),
+               c->at("65472"));
     // The input may be planned before the output fails; no point is.
     EXPECT_TRUE(c->plan.points.empty());
   }

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 
@@ -74,6 +75,22 @@ TEST_F(opener_stack, a_connection_whose_eds_leaves_the_rpi_empty_is_accepted) {
   const auto out = build_run_verify("no-rpi", eds);
   if (out.empty()) return;
   EXPECT_TRUE(row_matches(out, "Connection1 ", "frames of 4 B")) << out;
+}
+
+// Connections over 511 bytes need Large_Forward_Open and a larger OpENer
+// buffer than its default 512 bytes: the generated project raises it, and
+// the device serves O->T and T->O of different sizes.
+TEST_F(opener_stack, connections_over_511_bytes_open_with_large_forward_open) {
+  const auto eds = new_eds("large", "--vendor 4245 --product-type 12 --product-code 6 --name 'large frames' "
+                                    "--input-bytes 600 --output-bytes 520");
+  // A cache kept from an earlier build would hide a buffer left at 512.
+  fs::remove(fs::path(stack_root()) / "large" / "build" / "CMakeCache.txt");
+  const auto out = build_run_verify("large", eds);
+  if (out.empty()) return;
+  EXPECT_TRUE(row_matches(out, "Connection1 ", "frames of 600 B")) << out;
+  std::ifstream in(fs::path(stack_root()) / "large" / "gen" / "CMakeLists.txt");
+  const std::string cmake{std::istreambuf_iterator<char>(in), {}};
+  EXPECT_NE(cmake.find("set(OPENER_ETHERNET_BUFFER_SIZE 664 "), std::string::npos) << cmake;
 }
 
 TEST_F(opener_stack, a_hostile_name_is_escaped_all_the_way_to_the_identity_object) {
