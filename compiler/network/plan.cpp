@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 #include "emit/header_view.hpp"
 #include "io/read_file.hpp"
 #include "network/layout.hpp"

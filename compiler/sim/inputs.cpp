@@ -11,7 +11,7 @@
 
 #include <fmt/format.h>
 
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 #include "emit/header_parts.hpp"
 #include "live/plan.hpp"
 

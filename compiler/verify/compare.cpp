@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 #include "emit/header_view.hpp"
 
 namespace edsc::verify {
