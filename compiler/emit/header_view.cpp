@@ -136,10 +136,4 @@ header_facts collect_facts(const model::device& dev, const source_file& src, std
   return f;
 }
 
-bool header_result::has_error() const {
-  for (const auto& i : issues)
-    if (i.error) return true;
-  return false;
-}
-
 }  // namespace edsc::emit
