@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "emit/header_view.hpp"
+#include "facts/header_view.hpp"
 
 namespace edsc::emit {
 

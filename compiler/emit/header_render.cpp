@@ -6,7 +6,7 @@
 
 #include "edsc_version.hpp"
 #include "emit/header.hpp"
-#include "emit/header_parts.hpp"
+#include "facts/header_parts.hpp"
 #include "emit/templates.hpp"
 
 namespace edsc::emit {

@@ -12,7 +12,7 @@
 #include <fmt/format.h>
 
 #include "base/plural.hpp"
-#include "emit/header_parts.hpp"
+#include "facts/header_parts.hpp"
 #include "live/plan.hpp"
 
 namespace edsc::sim {

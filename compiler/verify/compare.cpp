@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "base/plural.hpp"
-#include "emit/header_view.hpp"
+#include "facts/header_view.hpp"
 
 namespace edsc::verify {
 

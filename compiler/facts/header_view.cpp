@@ -4,9 +4,9 @@
 #include <fmt/format.h>
 
 #include "cip/encap.hpp"
-#include "emit/header_parts.hpp"
-#include "emit/header_view.hpp"
-#include "emit/sha256.hpp"
+#include "facts/header_parts.hpp"
+#include "facts/header_view.hpp"
+#include "facts/sha256.hpp"
 
 namespace edsc::emit {
 

@@ -2,6 +2,8 @@
 // What a device's firmware needs from its EDS, as plain facts: what `edsc
 // header` renders (emit/header.hpp), and what the client, the simulator,
 // verify, doc and diff read of a device's connections and parameters.
+// The namespace is still emit's, where these facts were first collected, so
+// that moving them below the network rooms changed no code that reads them.
 #include <array>
 #include <cstdint>
 #include <optional>
