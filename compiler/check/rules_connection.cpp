@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "check/context.hpp"
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 #include "schema/cip_types.hpp"
 
 namespace edsc {

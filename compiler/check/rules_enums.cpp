@@ -7,7 +7,7 @@
 
 #include "check/context.hpp"
 #include "check/value_order.hpp"
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 
 namespace edsc {
 

@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "check/context.hpp"
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 
 namespace edsc {
 

@@ -4,7 +4,7 @@
 #include "check/context.hpp"
 #include "check/text_length.hpp"
 #include "check/value_order.hpp"
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 #include "schema/cip_types.hpp"
 
 namespace edsc {

@@ -5,7 +5,7 @@
 
 #include "check/context.hpp"
 #include "check/names.hpp"
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 #include "model/visit.hpp"
 
 namespace edsc {

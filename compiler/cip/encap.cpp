@@ -4,8 +4,8 @@
 
 #include <fmt/format.h>
 
-#include "diag/plural.hpp"
-#include "source/utf8.hpp"
+#include "base/plural.hpp"
+#include "base/utf8.hpp"
 
 namespace edsc::cip {
 

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "source/utf8.hpp"
+#include "base/utf8.hpp"
 
 namespace edsc {
 

@@ -4,7 +4,7 @@
 #include <fmt/format.h>
 
 #include "diff/context.hpp"
-#include "emit/header_parts.hpp"
+#include "facts/header_parts.hpp"
 
 namespace edsc::diff::detail {
 

@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "cst/cst.hpp"
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 #include "diff/context.hpp"
 #include "diff/pairing.hpp"
 

@@ -8,7 +8,7 @@
 #include "cst/cst.hpp"
 #include "diff/context.hpp"
 #include "diff/pairing.hpp"
-#include "emit/header_parts.hpp"
+#include "facts/header_parts.hpp"
 
 namespace edsc::diff::detail {
 

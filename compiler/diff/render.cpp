@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 #include "diff/diff.hpp"
 #include "emit/json_values.hpp"
 

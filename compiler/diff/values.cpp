@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "diff/context.hpp"
-#include "source/utf8.hpp"
+#include "base/utf8.hpp"
 
 namespace edsc::diff::detail {
 

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 #include "doc/markup.hpp"
 #include "doc/render.hpp"
 #include "edsc_version.hpp"

@@ -6,7 +6,7 @@
 
 #include "doc/sheet_parts.hpp"
 #include "emit/json_values.hpp"
-#include "emit/sha256.hpp"
+#include "facts/sha256.hpp"
 
 namespace edsc::doc {
 

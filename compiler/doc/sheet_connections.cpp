@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "doc/sheet_parts.hpp"
-#include "emit/header_view.hpp"
+#include "facts/header_view.hpp"
 
 namespace edsc::doc::detail {
 

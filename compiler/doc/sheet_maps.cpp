@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "doc/sheet_parts.hpp"
-#include "emit/header_parts.hpp"
+#include "facts/header_parts.hpp"
 
 namespace edsc::doc::detail {
 

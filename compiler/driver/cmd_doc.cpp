@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 #include "doc/site.hpp"
 #include "driver/choice.hpp"
 #include "driver/commands.hpp"

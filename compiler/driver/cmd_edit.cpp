@@ -3,7 +3,7 @@
 
 #include <fmt/format.h>
 
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 #include "diag/render_text.hpp"
 #include "driver/commands.hpp"
 #include "driver/destination.hpp"

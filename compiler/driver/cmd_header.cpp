@@ -9,7 +9,7 @@
 #include "driver/output.hpp"
 #include "diag/render_text.hpp"
 #include "driver/emitter_input.hpp"
-#include "emit/header_view.hpp"
+#include "emit/header.hpp"
 #include "emit/opener_plan.hpp"
 #include "io/read_file.hpp"
 #include "io/output_target.hpp"

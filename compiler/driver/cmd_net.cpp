@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 #include "diag/render_text.hpp"
 #include "driver/choice.hpp"
 #include "driver/commands.hpp"

@@ -11,7 +11,7 @@
 
 #include "check/check_file.hpp"
 #include "cip/status.hpp"
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 #include "driver/choice.hpp"
 #include "driver/commands.hpp"
 #include "driver/output.hpp"

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 #include "diag/render_text.hpp"
 
 namespace edsc::driver {

@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 #include "driver/suggest.hpp"
 
 namespace edsc::driver {

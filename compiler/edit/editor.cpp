@@ -6,7 +6,7 @@
 #include "edit/value_check.hpp"
 #include "parse/parser.hpp"
 #include "schema/text.hpp"
-#include "source/utf8.hpp"
+#include "base/utf8.hpp"
 
 namespace edsc::edit {
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "source/utf8.hpp"
+#include "base/utf8.hpp"
 
 namespace edsc::edit {
 

@@ -5,7 +5,8 @@
 #include <kainjow/mustache.hpp>
 
 #include "edsc_version.hpp"
-#include "emit/header_parts.hpp"
+#include "emit/header.hpp"
+#include "facts/header_parts.hpp"
 #include "emit/templates.hpp"
 
 namespace edsc::emit {
@@ -144,6 +145,12 @@ std::string squeeze_blank_lines(const std::string& text) {
 }
 
 }  // namespace
+
+bool header_result::has_error() const {
+  for (const auto& i : issues)
+    if (i.error) return true;
+  return false;
+}
 
 header_result generate_header(const model::device& dev, const source_file& src, const header_options& opt) {
   header_result r;

@@ -2,7 +2,7 @@
 
 #include "cst/cst.hpp"
 #include "emit/json_values.hpp"
-#include "source/utf8.hpp"
+#include "base/utf8.hpp"
 
 namespace edsc::emit::detail {
 

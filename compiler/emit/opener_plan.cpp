@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "emit/header_parts.hpp"
+#include "facts/header_parts.hpp"
 
 namespace edsc::emit {
 

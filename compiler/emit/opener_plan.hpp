@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "diag/diagnostic.hpp"
-#include "emit/header_view.hpp"
+#include "facts/header_view.hpp"
 
 namespace edsc::emit {
 

@@ -4,7 +4,7 @@
 // cmake_quoted (CMake arguments); nothing from it reaches code unescaped.
 #include <fmt/format.h>
 
-#include "emit/c_text.hpp"
+#include "facts/c_text.hpp"
 #include "emit/opener_plan.hpp"
 
 namespace edsc::emit {

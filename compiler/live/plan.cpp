@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "cip/message.hpp"
-#include "emit/header_parts.hpp"
+#include "facts/header_parts.hpp"
 
 namespace edsc::live {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "cip/connection_manager.hpp"
-#include "emit/header_view.hpp"
+#include "facts/header_view.hpp"
 #include "model/device.hpp"
 
 namespace edsc::live {

@@ -8,7 +8,7 @@
 
 #include "cip/encap.hpp"
 #include "cip/status.hpp"
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 #include "live/interrupt.hpp"
 #include "live/io.hpp"
 #include "live/plan.hpp"

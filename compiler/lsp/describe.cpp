@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 #include "model/decode.hpp"
 #include "schema/cip_types.hpp"
 

@@ -3,7 +3,7 @@
 
 #include <fmt/format.h>
 
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 #include "emit/json_values.hpp"
 #include "lsp/describe.hpp"
 #include "lsp/features.hpp"

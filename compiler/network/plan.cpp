@@ -7,8 +7,8 @@
 
 #include <fmt/format.h>
 
-#include "diag/plural.hpp"
-#include "emit/header_view.hpp"
+#include "base/plural.hpp"
+#include "facts/header_view.hpp"
 #include "io/read_file.hpp"
 #include "network/layout.hpp"
 #include "network/read_network.hpp"

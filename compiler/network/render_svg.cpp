@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 #include "network/render_map.hpp"
 
 namespace edsc::network {

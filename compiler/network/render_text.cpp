@@ -4,7 +4,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 #include "network/render_map.hpp"
 
 namespace edsc::network {

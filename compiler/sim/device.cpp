@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "emit/header_parts.hpp"
+#include "facts/header_parts.hpp"
 
 namespace edsc::sim {
 

@@ -11,8 +11,8 @@
 
 #include <fmt/format.h>
 
-#include "diag/plural.hpp"
-#include "emit/header_parts.hpp"
+#include "base/plural.hpp"
+#include "facts/header_parts.hpp"
 #include "live/plan.hpp"
 
 namespace edsc::sim {

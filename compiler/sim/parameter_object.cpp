@@ -17,7 +17,7 @@
 #include "cip/device_reply.hpp"
 #include "cip/message.hpp"
 #include "sim/objects.hpp"
-#include "source/utf8.hpp"
+#include "base/utf8.hpp"
 
 namespace edsc::sim {
 

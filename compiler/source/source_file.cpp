@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "source/line_starts.hpp"
-#include "source/utf8.hpp"
+#include "base/utf8.hpp"
 
 namespace edsc {
 

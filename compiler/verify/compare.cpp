@@ -5,8 +5,8 @@
 
 #include <fmt/format.h>
 
-#include "diag/plural.hpp"
-#include "emit/header_view.hpp"
+#include "base/plural.hpp"
+#include "facts/header_view.hpp"
 
 namespace edsc::verify {
 

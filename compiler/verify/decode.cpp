@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 
 namespace edsc::verify {
 

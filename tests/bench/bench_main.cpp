@@ -20,7 +20,7 @@
 #include "check/context.hpp"
 #include "cst/cst.hpp"
 #include "diff/diff.hpp"
-#include "emit/header_view.hpp"
+#include "emit/header.hpp"
 #include "emit/opener_plan.hpp"
 #include "inputs.hpp"
 #include "io/read_file.hpp"

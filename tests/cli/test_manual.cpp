@@ -119,16 +119,18 @@ TEST_F(Cli, ZshAndFishScriptsParse) {
 
 // After a flag that takes no value the next word is an argument again, and
 // every shell offers what that argument names; a choice of one word is
-// still offered.
+// still offered. What an option's value is comes from what its command
+// registered, never from its name: --upload-eds writes any file (a .txt
+// too), --library names a folder.
 TEST_F(Cli, EveryShellCompletesFilesAfterAFlag) {
   const auto work = dir_ / "work";
   fs::create_directories(work / "lib");
-  for (const char* f : {"a.eds", "plant.toml", "spec.json"}) write_bytes(work / f, "");
+  for (const char* f : {"a.eds", "plant.toml", "spec.json", "saved.txt"}) write_bytes(work / f, "");
   const std::vector<std::pair<std::string, std::string>> lines{
       {"edsc fmt --check ", "a.eds"},    {"edsc fmt -i ", "a.eds"},        {"edsc edit --in-place ", "a.eds"},
       {"edsc edit --force ", "a.eds"},   {"edsc fix -q ", "a.eds"},        {"edsc dump --json ", "a.eds"},
       {"edsc header --stack ", "opener"}, {"edsc net map ", "plant.toml"}, {"edsc new --from ", "spec.json"},
-      {"edsc fmt a.eds --eol ", "crlf"},
+      {"edsc fmt a.eds --eol ", "crlf"},  {"edsc probe h --upload-eds ", "saved.txt"}, {"edsc probe h --library ", "lib"},
   };
   for (const std::string shell : {"bash", "zsh", "fish"}) {
     if (!installed(shell)) {

@@ -13,8 +13,8 @@
 #include <fmt/format.h>
 
 #include "corpus_dirs.hpp"
-#include "emit/c_text.hpp"
-#include "emit/header_view.hpp"
+#include "facts/c_text.hpp"
+#include "emit/header.hpp"
 #include "emit_support.hpp"
 #include "io/read_file.hpp"
 #include "lower/lower.hpp"

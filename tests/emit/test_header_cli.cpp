@@ -1,8 +1,8 @@
 // `edsc header` as a user runs it, and the text helpers it relies on.
 #include <gtest/gtest.h>
 
-#include "emit/c_text.hpp"
-#include "emit/sha256.hpp"
+#include "facts/c_text.hpp"
+#include "facts/sha256.hpp"
 #include "emit_support.hpp"
 #include "test_paths.hpp"
 

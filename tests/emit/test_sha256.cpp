@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "emit/sha256.hpp"
+#include "facts/sha256.hpp"
 
 namespace {
 

@@ -26,7 +26,7 @@
 #include "edit/fingerprint.hpp"
 #include "edit/format.hpp"
 #include "emit/emit_json.hpp"
-#include "emit/header_view.hpp"
+#include "emit/header.hpp"
 #include "lower/lower.hpp"
 #include "lsp/jsonrpc.hpp"
 #include "lsp/server.hpp"

@@ -1,8 +1,8 @@
-// Counted words and articles (diag/plural.hpp), the one helper every message
+// Counted words and articles (base/plural.hpp), the one helper every message
 // uses for them.
 #include <gtest/gtest.h>
 
-#include "diag/plural.hpp"
+#include "base/plural.hpp"
 
 namespace edsc {
 namespace {

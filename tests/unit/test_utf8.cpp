@@ -4,7 +4,7 @@
 #include <string>
 
 #include "cip/device_reply.hpp"
-#include "source/utf8.hpp"
+#include "base/utf8.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "source/utf8.hpp"
+#include "base/utf8.hpp"
 
 namespace edsc::utf8 {
 

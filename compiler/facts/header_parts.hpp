@@ -1,9 +1,10 @@
 #pragma once
-// Internal to `edsc header`: the fact collectors split by family.
+// The fact collectors split by family, and the numbers a connection or an
+// assembly states, for whoever needs them without the whole header_facts.
 #include <vector>
 
-#include "emit/c_text.hpp"
-#include "emit/header_view.hpp"
+#include "facts/c_text.hpp"
+#include "facts/header_view.hpp"
 
 namespace edsc::emit {
 

@@ -4,9 +4,9 @@
 #include <fmt/format.h>
 
 #include "cip/encap.hpp"
-#include "emit/header_parts.hpp"
-#include "emit/header_view.hpp"
-#include "emit/sha256.hpp"
+#include "facts/header_parts.hpp"
+#include "facts/header_view.hpp"
+#include "facts/sha256.hpp"
 
 namespace edsc::emit {
 
@@ -134,12 +134,6 @@ header_facts collect_facts(const model::device& dev, const source_file& src, std
   }
   f.params = collect_params(dev);
   return f;
-}
-
-bool header_result::has_error() const {
-  for (const auto& i : issues)
-    if (i.error) return true;
-  return false;
 }
 
 }  // namespace edsc::emit

@@ -1,4 +1,4 @@
-#include "emit/c_text.hpp"
+#include "facts/c_text.hpp"
 
 #include <cctype>
 

@@ -3,7 +3,7 @@
 // at run time by sha256() when the processor has them; the portable rounds
 // (sha256.cpp) are the definition this must agree with
 // (tests/emit/test_sha256.cpp).
-#include "emit/sha256.hpp"
+#include "facts/sha256.hpp"
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <cpuid.h>

@@ -1,4 +1,4 @@
-#include "emit/sha256.hpp"
+#include "facts/sha256.hpp"
 
 namespace edsc::emit {
 

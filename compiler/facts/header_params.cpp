@@ -1,7 +1,7 @@
 // Parameter facts for `edsc header`: the table a Parameter Object serves from.
 #include <bit>
 
-#include "emit/header_parts.hpp"
+#include "facts/header_parts.hpp"
 
 namespace edsc::emit {
 

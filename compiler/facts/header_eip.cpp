@@ -2,7 +2,7 @@
 // sizes of every ConnectionN, from its path and its size/format fields.
 #include <fmt/format.h>
 
-#include "emit/header_parts.hpp"
+#include "facts/header_parts.hpp"
 
 namespace edsc::emit {
 

@@ -1,6 +1,9 @@
 #pragma once
-// `edsc header`: what a device's firmware needs from its EDS, as plain facts
-// (this file), then rendered through the mustache templates (header_render.cpp).
+// What a device's firmware needs from its EDS, as plain facts: what `edsc
+// header` renders (emit/header.hpp), and what the client, the simulator,
+// verify, doc and diff read of a device's connections and parameters.
+// The namespace is still emit's, where these facts were first collected, so
+// that moving them below the network rooms changed no code that reads them.
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -11,13 +14,6 @@
 #include "source/source_file.hpp"
 
 namespace edsc::emit {
-
-struct header_options {
-  std::string prefix = "EDS_";
-  std::optional<std::uint32_t> serial;  // unset: the build defines it (#ifndef guard)
-  std::string template_dir;             // empty: the built-in templates only
-  std::string output_name = "eds.h";    // base name of the header, for the include guard
-};
 
 // The Identity object attributes the EDS fixes (DEVICENET_FIRMWARE.md §1).
 struct identity_facts {
@@ -91,15 +87,5 @@ struct header_issue {
 // mean no header should be written; warnings are printed and the header kept.
 [[nodiscard]] header_facts collect_facts(const model::device& dev, const source_file& src,
                                          std::vector<header_issue>& issues);
-
-struct header_result {
-  std::string text;                  // the header, when no error
-  std::vector<header_issue> issues;  // EDS problems
-  std::optional<std::string> failure;  // template or option problem (exit 2)
-  [[nodiscard]] bool has_error() const;
-};
-
-[[nodiscard]] header_result generate_header(const model::device& dev, const source_file& src,
-                                            const header_options& options);
 
 }  // namespace edsc::emit
