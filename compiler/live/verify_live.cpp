@@ -9,10 +9,10 @@
 #include "cip/encap.hpp"
 #include "cip/status.hpp"
 #include "diag/plural.hpp"
-#include "live/interrupt.hpp"
+#include "net/interrupt.hpp"
 #include "live/io.hpp"
 #include "live/plan.hpp"
-#include "live/session.hpp"
+#include "live/client.hpp"
 
 namespace edsc::live {
 
@@ -115,17 +115,17 @@ struct checker {
   // Whether the device answers for the Assembly class itself (its Max
   // Instance): then an instance it calls unknown is certainly not there.
   std::optional<bool> assembly_class;
-  result<bool> assembly_class_answers(session& s) {
+  result<bool> assembly_class_answers(client& s) {
     if (!assembly_class) {
       auto r = s.request(cip::service::get_attribute_single, cip::logical_path(cip::class_id::assembly, 0, 2));
-      if (auto* e = failed(r)) return *e;
-      assembly_class = std::get<cip::reply>(r).is(cip::general_status::success);
+      if (!r) return r.error();
+      assembly_class = r->is(cip::general_status::success);
     }
     return *assembly_class;
   }
 
   // Attribute 4 of each assembly instance the EDS locates.
-  std::optional<net_error> assemblies(session& s) {
+  std::optional<error> assemblies(client& s) {
     const auto targets = plan_assemblies(dev);
     for (std::size_t i = 0; i < targets.size(); ++i) {
       const auto& t = targets[i];
@@ -134,14 +134,14 @@ struct checker {
       if (halted(check, eds_size)) continue;
       step(fmt::format("reading the size of assembly instance {} ({} of {})", t.instance, i + 1, targets.size()));
       auto r = s.request(cip::service::get_attribute_single, cip::logical_path(cip::class_id::assembly, t.instance, 4));
-      if (auto* e = failed(r)) return lost(*e, check, eds_size);
-      const auto& rep = std::get<cip::reply>(r);
+      if (!r) return lost(r.error(), check, eds_size);
+      const auto& rep = *r;
       const auto where = at(t.assem->size, t.assem->from);
       // Path destination unknown is OpENer's answer.
       if (rep.is(cip::general_status::path_destination_unknown) || rep.is(cip::general_status::object_does_not_exist)) {
         auto known = assembly_class_answers(s);
-        if (auto* e = failed(known)) return lost(*e, check, eds_size);
-        if (std::get<bool>(known)) {
+        if (!known) return lost(known.error(), check, eds_size);
+        if (*known) {
           row(check, eds_size, "no such instance", verdict::mismatch);
           diag(diag_id::live_assembly_missing, t.named_at,
                fmt::format("the device has no assembly instance {} ({}), which {} says it has", t.instance,
@@ -238,7 +238,7 @@ struct checker {
     }
   }
 
-  std::optional<net_error> connections(session& s) {
+  std::optional<error> connections(client& s) {
     std::uint16_t serial = static_cast<std::uint16_t>(0x4500 + (::getpid() & 0xFF));
     const auto plans = plan_connections(dev);
     for (std::size_t i = 0; i < plans.size(); ++i) {
@@ -276,7 +276,7 @@ struct checker {
       }
       frames(p, o, name, sizes);
       if (o.failure) return lost(*o.failure, {}, {});
-      if (o.interrupted) out.interrupted = interruption();
+      if (o.interrupted) out.interrupted = net::interruption();
     }
     return std::nullopt;
   }
@@ -349,7 +349,7 @@ struct checker {
       row(check, eds, stop_reason, verdict::not_tried);
       return true;
     }
-    if (const int sig = interruption()) {
+    if (const int sig = net::interruption()) {
       out.interrupted = sig;
       stop_reason = "not reached: interrupted";
       row(check, eds, stop_reason, verdict::not_tried);
@@ -360,7 +360,7 @@ struct checker {
 
   // The run failed during `check` (the device stopped answering, mostly):
   // its row says so, the failure ends the run.
-  net_error lost(const net_error& e, const std::string& check, const std::string& eds) {
+  error lost(const error& e, const std::string& check, const std::string& eds) {
     if (!check.empty()) row(check, eds, "not finished", verdict::not_tried);
     stop_reason = "not reached";
     return e;
@@ -394,21 +394,21 @@ std::chrono::milliseconds io_window(const live_options& opt, std::uint32_t to_rp
   return std::chrono::milliseconds(std::max<long long>(300, ten_rpis_ms));
 }
 
-live_report verify_live(const endpoint& device, const model::device& dev, const live_options& opt) {
+live_report verify_live(const net::endpoint& device, const model::device& dev, const live_options& opt) {
   live_report out;
   checker ck(dev, opt, out);
   ck.step(fmt::format("connecting to {}", device.text));
-  auto opened = session::open(device, opt.timeout);
-  if (auto* e = failed(opened)) {
-    out.failure = *e;
+  auto opened = client::open(device, opt.timeout);
+  if (!opened) {
+    out.failure = opened.error();
     return out;
   }
-  auto& s = std::get<session>(opened);
+  auto& s = *opened;
   if (!ck.halted("identity", "[Device]")) {
     ck.step("reading the identity");
     auto id = read_identity(s);
-    if (auto* e = failed(id)) out.failure = ck.lost(*e, "identity", "[Device]");
-    else ck.identity(std::get<cip::identity>(id));
+    if (!id) out.failure = ck.lost(id.error(), "identity", "[Device]");
+    else ck.identity(*id);
   }
   // After a failure these only add the rows of what was not reached.
   if (auto e = ck.assemblies(s)) out.failure = *e;

@@ -1,32 +1,52 @@
 #pragma once
-// A thin POSIX socket layer: every wait is a poll() bounded by a deadline,
-// every failure a message. Only the address the caller names is contacted.
+// A thin POSIX socket layer under the client (live) and the simulator (sim):
+// every wait is a poll() bounded by a deadline, every failure an error value
+// with an id and words for the user. Only the address the caller names is
+// contacted. What travels on the sockets is framed and checked above it.
 #include <netinet/in.h>
 
 #include <chrono>
 #include <cstdint>
 #include <optional>
 #include <string>
-#include <variant>
+#include <string_view>
+#include <utility>
 
+#include "base/result.hpp"
 #include "cip/bytes.hpp"
 
-namespace edsc::live {
+namespace edsc::net {
 
 using clock = std::chrono::steady_clock;
 
-// A failure of the network or of the peer, in words for the user.
-struct net_error {
+// How a failure of the network or of the peer is named: an id a program can
+// match and words for the user. These ids never change once given.
+namespace error_id {
+inline constexpr std::string_view address = "live-address";            // a host or port that cannot be used
+inline constexpr std::string_view socket = "live-socket";              // a local socket failed (in use, no permission)
+inline constexpr std::string_view connect = "live-connect";            // no TCP connection to the device
+inline constexpr std::string_view timeout = "live-timeout";            // nothing within the timeout
+inline constexpr std::string_view closed = "live-closed";              // the device closed or reset the connection
+inline constexpr std::string_view malformed = "live-malformed-reply";  // a reply the codec cannot decode
+inline constexpr std::string_view unexpected = "live-unexpected-reply";  // well formed, but not an answer to ours
+inline constexpr std::string_view refused = "live-refused";            // the device said no (a status)
+}  // namespace error_id
+
+struct error {
+  error() = default;
+  error(std::string_view id_, std::string message_, std::string field_ = {}, std::size_t offset_ = 0)
+      : id(id_), message(std::move(message_)), field(std::move(field_)), offset(offset_) {}
+
+  std::string_view id;
   std::string message;
+  // live-malformed-reply: the field that could not be read and its offset
+  // in the message (as a capture's dissector shows it).
+  std::string field;
+  std::size_t offset = 0;
 };
 
 template <class T>
-using result = std::variant<T, net_error>;
-
-template <class T>
-[[nodiscard]] const net_error* failed(const result<T>& r) {
-  return std::get_if<net_error>(&r);
-}
+using result = edsc::result<T, error>;
 
 class fd {
  public:
@@ -55,16 +75,24 @@ struct endpoint {
 [[nodiscard]] std::string to_string(const sockaddr_in& a);
 
 [[nodiscard]] result<fd> tcp_connect(const endpoint& to, clock::time_point deadline);
-[[nodiscard]] std::optional<net_error> send_all(int s, cip::byte_view b, clock::time_point deadline);
-// Exactly n bytes, or why not ("closed after 10 of 24 bytes", "no reply within").
-[[nodiscard]] std::optional<net_error> recv_exact(int s, std::uint8_t* out, std::size_t n,
-                                                  clock::time_point deadline, const char* what);
+[[nodiscard]] result<void> send_all(int s, cip::byte_view b, clock::time_point deadline);
+
+// What one read of a stream socket gave: bytes, the peer's orderly close,
+// or the system's reason the connection broke (a reset).
+struct received {
+  std::size_t size = 0;
+  bool closed = false;
+  std::string broken;
+};
+// Reads what has come (up to `len`), waiting until the deadline; nothing
+// (an empty optional) when nothing came in time.
+[[nodiscard]] std::optional<received> recv_some(int s, std::uint8_t* out, std::size_t len, clock::time_point deadline);
 
 // A UDP socket bound to `local` (port 0: any).
 [[nodiscard]] result<fd> udp_socket(const sockaddr_in& local);
 // Waits for readability until the deadline; false on timeout. An
 // interruptible wait also ends, false, once a signal was caught
-// (live/interrupt.hpp).
+// (net/interrupt.hpp).
 [[nodiscard]] bool wait_readable(int s, clock::time_point deadline, bool interruptible = false);
 
-}  // namespace edsc::live
+}  // namespace edsc::net

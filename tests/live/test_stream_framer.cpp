@@ -32,7 +32,9 @@ TEST(cip_stream_framer, a_message_split_at_every_byte_comes_out_whole_once) {
     f.feed(byte_view(msg).first(cut));
     EXPECT_EQ(f.pending(), cut);
     EXPECT_EQ(f.wanted(), cut < 24 ? 24u : 28u) << "cut at " << cut;
-    if (cut < msg.size()) EXPECT_EQ(next_hex(f), "") << "cut at " << cut;
+    if (cut < msg.size()) {
+      EXPECT_EQ(next_hex(f), "") << "cut at " << cut;
+    }
     f.feed(byte_view(msg).subspan(cut));
     EXPECT_EQ(next_hex(f), register_request) << "cut at " << cut;
     EXPECT_EQ(next_hex(f), "") << "cut at " << cut;
