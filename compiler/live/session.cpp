@@ -64,36 +64,31 @@ result<checked_reply> check_reply(cip::byte_view message, const expectation& x) 
 // The one table of the session's states: what each input does in each
 // state. An input a state does not list is refused (a request while one is
 // under way, or after the end) or ignored (the network after the end).
-namespace {
-
-struct transition {
-  st from;
-  int in;  // session::input
-  st to;
-};
-
-}  // namespace
-
 bool session::move(input in) {
+  struct transition {
+    st from;
+    input in;
+    st to;
+  };
   static constexpr transition table[] = {
-      {st::idle, int(input::begin_register), st::registering},
-      {st::idle, int(input::begin_request), st::awaiting},
-      {st::idle, int(input::peer_closed), st::closed},
-      {st::idle, int(input::close), st::closed},
-      {st::registering, int(input::reply), st::idle},
-      {st::registering, int(input::bad_reply), st::failed},
-      {st::registering, int(input::timeout), st::failed},
-      {st::registering, int(input::peer_closed), st::failed},
-      {st::registering, int(input::close), st::closed},
-      {st::awaiting, int(input::reply), st::idle},
-      {st::awaiting, int(input::bad_reply), st::failed},
-      {st::awaiting, int(input::timeout), st::failed},
-      {st::awaiting, int(input::peer_closed), st::failed},
-      {st::awaiting, int(input::close), st::closed},
-      {st::failed, int(input::close), st::closed},
+      {st::idle, input::begin_register, st::registering},
+      {st::idle, input::begin_request, st::awaiting},
+      {st::idle, input::peer_closed, st::closed},
+      {st::idle, input::close, st::closed},
+      {st::registering, input::reply, st::idle},
+      {st::registering, input::bad_reply, st::failed},
+      {st::registering, input::timeout, st::failed},
+      {st::registering, input::peer_closed, st::failed},
+      {st::registering, input::close, st::closed},
+      {st::awaiting, input::reply, st::idle},
+      {st::awaiting, input::bad_reply, st::failed},
+      {st::awaiting, input::timeout, st::failed},
+      {st::awaiting, input::peer_closed, st::failed},
+      {st::awaiting, input::close, st::closed},
+      {st::failed, input::close, st::closed},
   };
   for (const auto& t : table)
-    if (t.from == state_ && t.in == int(in)) {
+    if (t.from == state_ && t.in == in) {
       state_ = t.to;
       return true;
     }
