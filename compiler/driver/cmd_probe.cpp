@@ -20,7 +20,7 @@
 #include "io/output_target.hpp"
 #include "live/plan.hpp"
 #include "live/probe.hpp"
-#include "live/session.hpp"
+#include "live/client.hpp"
 #include "live/upload.hpp"
 
 namespace edsc::driver {
@@ -100,15 +100,15 @@ std::string render_probe_text(const probe_cli& cli, const live::probe_result& r,
 // --upload-eds FILE: the device's own EDS from its File object, written by
 // the output policy (io/output_target.hpp) as every output is; the bytes
 // written, or the problem in words.
-std::variant<std::size_t, std::string> upload_eds(const probe_cli& cli, const live::endpoint& to,
+std::variant<std::size_t, std::string> upload_eds(const probe_cli& cli, const net::endpoint& to,
                                                   std::chrono::milliseconds timeout) {
-  auto opened = live::session::open(to, timeout);
-  if (auto* e = live::failed(opened)) return e->message;
-  auto& s = std::get<live::session>(opened);
+  auto opened = live::client::open(to, timeout);
+  if (!opened) return opened.error().message;
+  auto& s = *opened;
   auto file = live::upload_file(s);
   s.close();
-  if (auto* e = live::failed(file)) return "upload of the EDS from the device: " + e->message;
-  const auto& bytes = std::get<cip::bytes>(file);
+  if (!file) return "upload of the EDS from the device: " + file.error().message;
+  const auto& bytes = *file;
   std::fflush(stdout);
   if (auto e = io::write_output(cli.upload_eds, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size())))
     return e->message;
@@ -161,11 +161,11 @@ int run_probe(const probe_cli& cli) {
   opt.udp = cli.udp;
   // A first pass learns the identity; the library's instances join the scan.
   auto r = live::probe(*to, opt);
-  if (auto* e = live::failed(r)) {
-    print_device_error(cli.host, *e);
+  if (!r) {
+    print_device_error(cli.host, r.error());
     return exit_failure;
   }
-  auto& result = std::get<live::probe_result>(r);
+  auto& result = *r;
   std::vector<library_match> lib;
   if (!cli.library.empty()) {
     lib = match_library(library, result.identity);
@@ -174,11 +174,11 @@ int run_probe(const probe_cli& cli) {
     if (!named.empty() && !result.assemblies_note.empty()) {
       opt.extra_instances = named;
       auto again = live::probe(*to, opt);
-      if (auto* e = live::failed(again)) {
-        print_device_error(cli.host, *e);
+      if (!again) {
+        print_device_error(cli.host, again.error());
         return exit_failure;
       }
-      result = std::get<live::probe_result>(again);
+      result = *again;
     }
   }
   std::optional<std::variant<std::size_t, std::string>> uploaded;

@@ -12,7 +12,7 @@
 #include "driver/net_report.hpp"
 #include "driver/progress.hpp"
 #include "driver/verify_live.hpp"
-#include "live/interrupt.hpp"
+#include "net/interrupt.hpp"
 #include "live/verify_live.hpp"
 
 namespace edsc::driver {
@@ -78,16 +78,16 @@ std::chrono::milliseconds timeout_ms(double seconds) {
   return std::chrono::milliseconds(static_cast<long long>(seconds * 1000.0));
 }
 
-std::optional<live::endpoint> device_address(const std::string& host) {
-  auto to = live::resolve(host, cip::enip_port);
-  if (auto* e = live::failed(to)) {
-    print_error(e->message);
+std::optional<net::endpoint> device_address(const std::string& host) {
+  auto to = net::resolve(host, cip::enip_port);
+  if (!to) {
+    print_error(to.error().message);
     return std::nullopt;
   }
-  return std::get<live::endpoint>(to);
+  return *to;
 }
 
-void print_device_error(const std::string& host, const live::net_error& e) {
+void print_device_error(const std::string& host, const live::error& e) {
   print_error(fmt::format("{}: {}", host, e.message));
 }
 
@@ -132,7 +132,7 @@ int run_verify_live(const verify_live_cli& live, const std::string& eds, const s
   opt.timeout = timeout_ms(live.timeout_s);
   opt.connections = live.connections;
   opt.io_window = timeout_ms(live.watch_s);
-  live::catch_interrupts();
+  net::catch_interrupts();
   live::live_report verdict;
   {
     progress_line progress;

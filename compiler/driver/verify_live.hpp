@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "driver/output.hpp"
-#include "live/socket.hpp"
+#include "live/error.hpp"
 
 namespace edsc::driver {
 
@@ -27,8 +27,8 @@ void add_verify_live_options(CLI::App* cmd, verify_live_cli& cli);
 // --timeout S as milliseconds, for verify --live and probe.
 [[nodiscard]] std::chrono::milliseconds timeout_ms(double seconds);
 // HOST[:PORT] as an address (TCP 44818 unless a port is given), or why not (printed).
-[[nodiscard]] std::optional<live::endpoint> device_address(const std::string& host);
+[[nodiscard]] std::optional<net::endpoint> device_address(const std::string& host);
 // "edsc: error: HOST: why" for a device that could not be talked to.
-void print_device_error(const std::string& host, const live::net_error& e);
+void print_device_error(const std::string& host, const live::error& e);
 
 }  // namespace edsc::driver

@@ -10,7 +10,7 @@
 
 #include "cip/io_frame.hpp"
 #include "cip/status.hpp"
-#include "live/interrupt.hpp"
+#include "net/interrupt.hpp"
 
 namespace edsc::live {
 
@@ -34,7 +34,7 @@ void measure(int sock, const connection_plan& plan, const cip::forward_open_repl
   sockaddr_in to = device;
   to.sin_port = htons(cip::io_port);
   std::vector<std::uint8_t> frame(cip::max_io_frame_size);  // a T->O frame, whole
-  while (clock::now() < end && interruption() == 0) {
+  while (clock::now() < end && net::interruption() == 0) {
     if (send_ot && clock::now() >= next_send) {
       cip::io_frame f;
       f.connection_id = granted.ot_connection_id;
@@ -47,7 +47,7 @@ void measure(int sock, const connection_plan& plan, const cip::forward_open_repl
       next_send += ot_period;
     }
     const auto wake = send_ot ? std::min(next_send, end) : end;
-    if (!wait_readable(sock, wake, true)) continue;
+    if (!net::wait_readable(sock, wake, true)) continue;
     sockaddr_in from{};
     socklen_t len = sizeof from;
     const auto n = ::recvfrom(sock, frame.data(), frame.size(), 0, reinterpret_cast<sockaddr*>(&from), &len);
@@ -76,15 +76,16 @@ void measure(int sock, const connection_plan& plan, const cip::forward_open_repl
 
 }  // namespace
 
-connection_outcome exercise_connection(session& s, const connection_plan& plan, std::uint16_t serial,
+connection_outcome exercise_connection(client& s, const connection_plan& plan, std::uint16_t serial,
                                        std::chrono::milliseconds window) {
   connection_outcome out;
   // Bound before the Forward_Open so the first frames are not lost.
   sockaddr_in local = s.local();
   local.sin_port = htons(cip::io_port);
-  auto udp = udp_socket(local);
-  if (auto* e = failed(udp)) {
-    out.failure = net_error{e->message + " (class 1 I/O needs UDP port 2222 on this host)"};
+  auto udp = net::udp_socket(local);
+  if (!udp) {
+    out.failure = udp.error();
+    out.failure->message += " (class 1 I/O needs UDP port 2222 on this host)";
     return out;
   }
 
@@ -96,11 +97,11 @@ connection_outcome exercise_connection(session& s, const connection_plan& plan, 
   fo.to_connection_id = 0x45440000u + serial;  // ours for T->O point-to-point
   const auto service = fo.large ? cip::service::large_forward_open : cip::service::forward_open;
   auto reply = s.request_raw(service, cip::encode_forward_open(fo));
-  if (auto* e = failed(reply)) {
-    out.failure = *e;
+  if (!reply) {
+    out.failure = reply.error();
     return out;
   }
-  const auto& rep = std::get<cip::reply>(reply);
+  const auto& rep = *reply;
   if (rep.general != 0) {
     out.general = rep.general;
     out.additional = rep.additional;
@@ -108,13 +109,14 @@ connection_outcome exercise_connection(session& s, const connection_plan& plan, 
   }
   auto granted = cip::decode_forward_open_ok(rep.data, 0);
   if (!granted) {
-    out.failure = net_error{fmt::format("malformed Forward_Open reply: {}", granted.error().what)};
+    out.failure = error{net::error_id::malformed, fmt::format("malformed Forward_Open reply: {}", granted.error().what),
+                        granted.error().what, granted.error().offset};
     return out;
   }
   out.opened = true;
   out.granted = granted.value();
-  measure(std::get<fd>(udp).get(), plan, out.granted, s.peer().addr, window, out.io);
-  out.interrupted = interruption() != 0;
+  measure(udp->get(), plan, out.granted, s.peer().addr, window, out.io);
+  out.interrupted = net::interruption() != 0;
 
   // Closed however the watch ended: by the connection triad and path, as opened.
   cip::forward_close_request fc;
@@ -123,11 +125,12 @@ connection_outcome exercise_connection(session& s, const connection_plan& plan, 
   fc.originator_serial = originator_serial;
   fc.path = plan.app_path;
   auto closed = s.request_raw(cip::service::forward_close, cip::encode_forward_close(fc));
-  if (auto* e = failed(closed)) {
-    out.failure = net_error{fmt::format("Forward_Close: {}", e->message)};
+  if (!closed) {
+    out.failure = closed.error();
+    out.failure->message = "Forward_Close: " + out.failure->message;
     return out;
   }
-  if (const auto& c = std::get<cip::reply>(closed); c.general != 0)
+  if (const auto& c = *closed; c.general != 0)
     out.close_problem = fmt::format("Forward_Close refused: {}", cip::describe_status(c.general, c.additional));
   return out;
 }

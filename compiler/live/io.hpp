@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "live/plan.hpp"
-#include "live/session.hpp"
+#include "live/client.hpp"
 
 namespace edsc::live {
 
@@ -34,12 +34,12 @@ struct connection_outcome {
   std::string close_problem;  // Forward_Close refused
   // The device stopped answering (or a local failure): the run ends here.
   // What was measured before stays in `io`.
-  std::optional<net_error> failure;
+  std::optional<error> failure;
 };
 
 // Opens the connection, watches its I/O for `window` (less when a signal is
 // caught), closes it. A refusal is an outcome, as is a failure midway.
-[[nodiscard]] connection_outcome exercise_connection(session& s, const connection_plan& plan, std::uint16_t serial,
+[[nodiscard]] connection_outcome exercise_connection(client& s, const connection_plan& plan, std::uint16_t serial,
                                                      std::chrono::milliseconds window);
 
 }  // namespace edsc::live

@@ -6,7 +6,7 @@
 
 #include "cip/message.hpp"
 #include "cip/status.hpp"
-#include "live/session.hpp"
+#include "live/client.hpp"
 
 namespace edsc::live {
 
@@ -26,31 +26,31 @@ const char* to_string(keying k) {
   return "none";
 }
 
-result<probe_result> probe(const endpoint& device, const probe_options& opt) {
+result<probe_result> probe(const net::endpoint& device, const probe_options& opt) {
   probe_result out;
   if (opt.udp) {
     auto ids = list_identity_udp(device, opt.timeout);
-    if (auto* e = failed(ids)) return *e;
-    out.identity = std::get<std::vector<cip::identity>>(ids).front();
+    if (!ids) return ids.error();
+    out.identity = ids->front();
     out.identity_source = "ListIdentity (UDP)";
   }
-  auto opened = session::open(device, opt.timeout);
-  if (auto* e = failed(opened)) return *e;
-  auto& s = std::get<session>(opened);
+  auto opened = client::open(device, opt.timeout);
+  if (!opened) return opened.error();
+  auto& s = *opened;
   if (!opt.udp) {
     auto id = read_identity(s);
-    if (auto* e = failed(id)) return *e;
-    out.identity = std::get<cip::identity>(id);
+    if (!id) return id.error();
+    out.identity = *id;
     out.identity_source = "Identity object";
   }
   auto services = s.list_services();
-  if (auto* e = failed(services)) return *e;
-  out.services = std::get<std::vector<cip::service_info>>(services);
+  if (!services) return services.error();
+  out.services = *services;
   // Assembly class attribute 2, Max Instance, bounds the scan.
   auto max = s.request(cip::service::get_attribute_single, cip::logical_path(cip::class_id::assembly, 0, 2));
-  if (auto* e = failed(max)) return *e;
+  if (!max) return max.error();
   std::vector<std::uint32_t> instances = opt.extra_instances;
-  if (const auto& rep = std::get<cip::reply>(max); rep.general == 0 && rep.data.size() >= 2) {
+  if (const auto& rep = *max; rep.general == 0 && rep.data.size() >= 2) {
     const std::uint32_t n = rep.data[0] | (rep.data[1] << 8);
     for (std::uint32_t i = 1; i <= std::min(n, max_scanned_instances); ++i) instances.push_back(i);
     if (n > max_scanned_instances)
@@ -64,8 +64,8 @@ result<probe_result> probe(const endpoint& device, const probe_options& opt) {
   instances.erase(std::unique(instances.begin(), instances.end()), instances.end());
   for (const auto i : instances) {
     auto r = s.request(cip::service::get_attribute_single, cip::logical_path(cip::class_id::assembly, i, 4));
-    if (auto* e = failed(r)) return *e;
-    const auto& rep = std::get<cip::reply>(r);
+    if (!r) return r.error();
+    const auto& rep = *r;
     if (rep.general == 0 && rep.data.size() >= 2)
       out.assemblies.push_back({i, static_cast<std::uint32_t>(rep.data[0] | (rep.data[1] << 8))});
   }

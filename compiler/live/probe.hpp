@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "cip/encap.hpp"
-#include "live/socket.hpp"
+#include "live/error.hpp"
 
 namespace edsc::live {
 
@@ -34,7 +34,7 @@ struct probe_options {
 // this many, are asked for their size one request at a time.
 inline constexpr std::uint32_t max_scanned_instances = 512;
 
-[[nodiscard]] result<probe_result> probe(const endpoint& device, const probe_options& opt);
+[[nodiscard]] result<probe_result> probe(const net::endpoint& device, const probe_options& opt);
 
 // What a scanner's electronic key from an EDS revision would say of the device.
 enum class keying { exact, compatible, none };

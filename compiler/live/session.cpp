@@ -1,10 +1,6 @@
 #include "live/session.hpp"
 
-#include <arpa/inet.h>
-#include <sys/socket.h>
-
-#include <cerrno>
-#include <cstring>
+#include <algorithm>
 
 #include <fmt/format.h>
 
@@ -14,14 +10,19 @@ namespace edsc::live {
 
 namespace {
 
+using st = session::state;
+
 std::string command_name(std::uint16_t c) {
   const auto name = cip::name_of(static_cast<cip::command>(c));
   return name.empty() ? fmt::format("0x{:04X}", c) : std::string(name);
 }
 
-std::string malformed(std::string_view what, const cip::decode_error& e) {
-  return fmt::format("malformed {} from the device (byte {}): {}", what, e.offset, e.what);
-}
+std::string command_name(cip::command c) { return command_name(static_cast<std::uint16_t>(c)); }
+
+// ListIdentity and ListServices need no session: any handle is taken.
+bool carries_session(cip::command c) { return c != cip::command::list_identity && c != cip::command::list_services; }
+
+}  // namespace
 
 cip::sender_context make_context(std::uint64_t n) {
   cip::sender_context c{};
@@ -31,169 +32,226 @@ cip::sender_context make_context(std::uint64_t n) {
   return c;
 }
 
-}  // namespace
-
-result<session> session::open(const endpoint& to, std::chrono::milliseconds timeout) {
-  session s;
-  s.peer_ = to;
-  s.timeout_ = timeout;
-  auto conn = tcp_connect(to, clock::now() + timeout);
-  if (auto* e = failed(conn)) return *e;
-  s.sock_ = std::move(std::get<fd>(conn));
-  socklen_t len = sizeof s.local_;
-  ::getsockname(s.sock_.get(), reinterpret_cast<sockaddr*>(&s.local_), &len);
-  const auto data = cip::register_session_data();
-  auto reply = s.exchange(cip::command::register_session, data, true);
-  if (auto* e = failed(reply)) return *e;
-  auto version = cip::decode_register_session(std::get<cip::bytes>(reply), cip::encap_header_size);
-  if (!version) return net_error{malformed("RegisterSession reply", version.error())};
-  if (s.handle_ == 0) return net_error{"the device registered a session with handle 0"};
-  return s;
+error malformed(std::string_view what, const cip::decode_error& e) {
+  return error{net::error_id::malformed,
+               fmt::format("malformed {} from the device (byte {}): {}", what, e.offset, e.what), e.what, e.offset};
 }
 
-session::~session() { close(); }
-
-void session::close() {
-  if (!sock_.valid()) return;
-  if (handle_ != 0) {
-    // No reply comes to UnRegisterSession: the device closes the connection.
-    const auto msg = cip::encode_encap(cip::command::unregister_session, handle_, make_context(++context_counter_), {});
-    (void)send_all(sock_.get(), msg, clock::now() + std::chrono::milliseconds(200));
-  }
-  sock_ = fd();
-  handle_ = 0;
-}
-
-result<cip::bytes> session::exchange(cip::command cmd, cip::byte_view data, bool registering) {
-  if (!sock_.valid()) return net_error{"the session is closed"};
-  const auto deadline = clock::now() + timeout_;
-  const auto context = make_context(++context_counter_);
-  const auto msg = cip::encode_encap(cmd, handle_, context, data);
-  if (auto e = send_all(sock_.get(), msg, deadline)) return *e;
-  std::uint8_t head[cip::encap_header_size];
-  const auto what = fmt::format("{} reply header", command_name(static_cast<std::uint16_t>(cmd)));
-  if (auto e = recv_exact(sock_.get(), head, sizeof head, deadline, what.c_str())) return *e;
-  auto h = cip::decode_encap_header(head);
-  if (!h) return net_error{malformed("encapsulation header", h.error())};
-  cip::bytes body(cip::encap_header_size + h->length);
-  std::copy(std::begin(head), std::end(head), body.begin());
-  const auto body_what = fmt::format("{} reply", command_name(static_cast<std::uint16_t>(cmd)));
-  if (h->length > 0)
-    if (auto e = recv_exact(sock_.get(), body.data() + cip::encap_header_size, h->length, deadline, body_what.c_str()))
-      return *e;
-  if (h->command != static_cast<std::uint16_t>(cmd))
-    return net_error{fmt::format("the device answered {} with {}", command_name(static_cast<std::uint16_t>(cmd)),
-                                 command_name(h->command))};
-  if (h->context != context)
-    return net_error{fmt::format("the device's {} does not echo our sender context: a reply to another request",
-                                 body_what)};
+result<checked_reply> check_reply(cip::byte_view message, const expectation& x) {
+  auto h = cip::decode_encap_header(message);
+  if (!h) return fail(malformed("encapsulation header", h.error()));
+  const auto asked = command_name(x.command);
+  if (h->command != static_cast<std::uint16_t>(x.command))
+    return fail(error{net::error_id::unexpected,
+                      fmt::format("the device answered {} with {}", asked, command_name(h->command))});
+  if (h->context != x.context)
+    return fail(error{net::error_id::unexpected,
+                      fmt::format("the device's {} reply does not echo our sender context: a reply to another request",
+                                  asked)});
   if (h->status != 0) {
     const auto text = cip::words_of(cip::encap_status{h->status});
-    return net_error{fmt::format("the device refused {} with encapsulation status 0x{:04X} {}",
-                                 command_name(static_cast<std::uint16_t>(cmd)), h->status,
-                                 text.empty() ? "(unknown code)" : text)};
+    return fail(error{net::error_id::refused,
+                      fmt::format("the device refused {} with encapsulation status 0x{:04X} {}", asked, h->status,
+                                  text.empty() ? "(unknown code)" : text)});
   }
-  if (registering) {
-    handle_ = h->session;
-  } else if (cmd != cip::command::list_identity && cmd != cip::command::list_services && h->session != handle_) {
-    return net_error{fmt::format("the device's {} carries session handle 0x{:08X}, ours is 0x{:08X}", body_what,
-                                 h->session, handle_)};
-  }
-  body.erase(body.begin(), body.begin() + cip::encap_header_size);
-  return body;
+  if (x.session && h->session != *x.session)
+    return fail(error{net::error_id::unexpected,
+                      fmt::format("the device's {} reply carries session handle 0x{:08X}, ours is 0x{:08X}", asked,
+                                  h->session, *x.session)});
+  return checked_reply{h.value(), message.subspan(cip::encap_header_size)};
 }
 
-result<cip::identity> session::list_identity() {
-  auto reply = exchange(cip::command::list_identity, {});
-  if (auto* e = failed(reply)) return *e;
-  auto ids = cip::decode_list_identity(std::get<cip::bytes>(reply), cip::encap_header_size);
-  if (!ids) return net_error{malformed("ListIdentity reply", ids.error())};
-  return ids.value().front();
-}
-
-result<std::vector<cip::service_info>> session::list_services() {
-  auto reply = exchange(cip::command::list_services, {});
-  if (auto* e = failed(reply)) return *e;
-  auto services = cip::decode_list_services(std::get<cip::bytes>(reply), cip::encap_header_size);
-  if (!services) return net_error{malformed("ListServices reply", services.error())};
-  return services.value();
-}
-
-result<cip::reply> session::request(cip::service service, cip::byte_view path, cip::byte_view data) {
-  return request_raw(service, cip::encode_request(service, path, data));
-}
-
-result<cip::reply> session::request_raw(cip::service service, cip::byte_view cip_request) {
-  const auto timeout_s = static_cast<std::uint16_t>(std::max<long long>(1, timeout_.count() / 1000));
-  auto reply = exchange(cip::command::send_rr_data, cip::send_rr_data(cip_request, timeout_s));
-  if (auto* e = failed(reply)) return *e;
-  const auto& body = std::get<cip::bytes>(reply);
-  auto item = cip::decode_send_rr_data(body, cip::encap_header_size);
-  if (!item) return net_error{malformed("SendRRData reply", item.error())};
-  const auto at = static_cast<std::size_t>(item.value().data() - body.data()) + cip::encap_header_size;
-  auto rep = cip::decode_reply(item.value(), at);
-  if (!rep) return net_error{malformed("CIP reply", rep.error())};
-  if (rep->service != (cip::code(service) | cip::reply_bit))
-    return net_error{fmt::format("the device replied to service 0x{:02X} when asked for service 0x{:02X}",
-                                 rep->service & 0x7F, cip::code(service))};
-  return std::move(rep.value());
-}
-
-result<cip::identity> read_identity(session& s) {
-  auto all = s.request(cip::service::get_attributes_all, cip::logical_path(cip::class_id::identity, 1));
-  if (auto* e = failed(all)) return *e;
-  const auto& rep = std::get<cip::reply>(all);
-  if (!rep.is(cip::general_status::success)) return s.list_identity();
-  auto d = cip::decode_identity_all(rep.data, 0);
-  if (!d) return net_error{malformed("Identity reply", d.error())};
-  return d.value();
-}
-
-result<std::vector<cip::identity>> list_identity_udp(const endpoint& to, std::chrono::milliseconds timeout) {
-  sockaddr_in any{};
-  any.sin_family = AF_INET;
-  auto sock = udp_socket(any);
-  if (auto* e = failed(sock)) return *e;
-  const int s = std::get<fd>(sock).get();
-  auto context = make_context(0x63);
-  // The first two context bytes are the longest reply delay (ms) a device
-  // may choose for a ListIdentity by UDP; 500 is the least OpENer honours.
-  context[0] = 0xF4, context[1] = 0x01;
-  const auto msg = cip::encode_encap(cip::command::list_identity, 0, context, {});
-  if (::sendto(s, msg.data(), msg.size(), 0, reinterpret_cast<const sockaddr*>(&to.addr), sizeof to.addr) < 0) {
-    if (errno == EACCES)
-      return net_error{fmt::format("{} is a broadcast address: edsc probes one device, by its own address",
-                                   to.text)};
-    return net_error{fmt::format("cannot send ListIdentity to {}: {}", to_string(to.addr), std::strerror(errno))};
-  }
-  std::vector<cip::identity> found;
-  const auto deadline = clock::now() + timeout;
-  std::string last_problem;
-  while (wait_readable(s, deadline)) {
-    std::uint8_t buf[1500];
-    sockaddr_in from{};
-    socklen_t len = sizeof from;
-    const auto n = ::recvfrom(s, buf, sizeof buf, 0, reinterpret_cast<sockaddr*>(&from), &len);
-    if (n <= 0) continue;
-    // Only the address asked; a stray datagram is not the device.
-    if (from.sin_addr.s_addr != to.addr.sin_addr.s_addr) continue;
-    const cip::byte_view got(buf, static_cast<std::size_t>(n));
-    auto h = cip::decode_encap_header(got);
-    if (!h) { last_problem = malformed("ListIdentity header", h.error()); continue; }
-    if (h->command != static_cast<std::uint16_t>(cip::command::list_identity) || h->context != context ||
-        h->length != got.size() - cip::encap_header_size) {
-      last_problem = "a UDP reply that is not our ListIdentity's";
-      continue;
+// The one table of the session's states: what each input does in each
+// state. An input a state does not list is refused (a request while one is
+// under way, or after the end) or ignored (the network after the end).
+bool session::move(input in) {
+  struct transition {
+    st from;
+    input in;
+    st to;
+  };
+  static constexpr transition table[] = {
+      {st::idle, input::begin_register, st::registering},
+      {st::idle, input::begin_request, st::awaiting},
+      {st::idle, input::peer_closed, st::closed},
+      {st::idle, input::close, st::closed},
+      {st::registering, input::reply, st::idle},
+      {st::registering, input::bad_reply, st::failed},
+      {st::registering, input::timeout, st::failed},
+      {st::registering, input::peer_closed, st::failed},
+      {st::registering, input::close, st::closed},
+      {st::awaiting, input::reply, st::idle},
+      {st::awaiting, input::bad_reply, st::failed},
+      {st::awaiting, input::timeout, st::failed},
+      {st::awaiting, input::peer_closed, st::failed},
+      {st::awaiting, input::close, st::closed},
+      {st::failed, input::close, st::closed},
+  };
+  for (const auto& t : table)
+    if (t.from == state_ && t.in == in) {
+      state_ = t.to;
+      return true;
     }
-    auto ids = cip::decode_list_identity(got.subspan(cip::encap_header_size), cip::encap_header_size);
-    if (!ids) { last_problem = malformed("ListIdentity reply", ids.error()); continue; }
-    for (auto& id : ids.value()) found.push_back(std::move(id));
-    break;
+  return false;
+}
+
+void session::begin(input in, cip::command cmd, cip::byte_view data, clock::time_point now) {
+  if (!move(in)) {
+    events_.emplace_back(error{net::error_id::closed, state_ == st::awaiting || state_ == st::registering
+                                                          ? "a request is already under way"
+                                                          : "the session is closed"});
+    return;
   }
-  if (found.empty())
-    return net_error{last_problem.empty() ? fmt::format("no ListIdentity reply from {} within the timeout", to.text)
-                                          : last_problem};
-  return found;
+  expect_ = {cmd, make_context(++context_counter_), {}};
+  if (in == input::begin_request && carries_session(cmd)) expect_.session = handle_;
+  deadline_ = now + timeout_;
+  transmit_.push_back(cip::encode_encap(cmd, handle_, expect_.context, data));
+  drain();  // bytes that came before the request are read as its reply, as a socket would
+}
+
+void session::register_session(clock::time_point now) {
+  begin(input::begin_register, cip::command::register_session, cip::register_session_data(), now);
+}
+
+void session::list_identity(clock::time_point now) { begin(input::begin_request, cip::command::list_identity, {}, now); }
+
+void session::list_services(clock::time_point now) { begin(input::begin_request, cip::command::list_services, {}, now); }
+
+void session::request(cip::service service, cip::byte_view cip_request, clock::time_point now) {
+  service_ = cip::code(service);
+  const auto timeout_s = static_cast<std::uint16_t>(std::max<long long>(1, timeout_.count() / 1000));
+  begin(input::begin_request, cip::command::send_rr_data, cip::send_rr_data(cip_request, timeout_s), now);
+}
+
+void session::close() {
+  const bool was_open = state_ != st::closed;
+  if (!move(input::close)) return;
+  if (was_open && handle_ != 0)
+    transmit_.push_back(
+        cip::encode_encap(cip::command::unregister_session, handle_, make_context(++context_counter_), {}));
+  handle_ = 0;
+  events_.emplace_back(closed{});
+}
+
+void session::handle_bytes(cip::byte_view b, clock::time_point) {
+  if (state_ == st::closed || state_ == st::failed) return;
+  framer_.feed(b);
+  drain();
+}
+
+void session::drain() {
+  while (state_ == st::registering || state_ == st::awaiting) {
+    auto m = framer_.next();
+    if (!m) {
+      fail_with(input::bad_reply,
+                error{net::error_id::malformed, fmt::format("the device announced a message of {} bytes, more than {}",
+                                                            m.error().length, m.error().bound)});
+      return;
+    }
+    if (!m->has_value()) return;
+    answer(**m);
+  }
+}
+
+void session::answer(const cip::bytes& message) {
+  auto ev = decode(message);
+  if (!ev) return fail_with(input::bad_reply, ev.error());
+  (void)move(input::reply);
+  events_.push_back(std::move(*ev));
+}
+
+result<event> session::decode(const cip::bytes& message) {
+  const bool registering = state_ == st::registering;
+  auto checked = check_reply(message, expect_);
+  if (!checked) return checked.error();
+  const auto data = &checked->data;
+  const auto base = cip::encap_header_size;
+  switch (expect_.command) {
+    case cip::command::register_session: {
+      if (registering) handle_ = checked->header.session;
+      auto version = cip::decode_register_session(*data, base);
+      if (!version) return malformed("RegisterSession reply", version.error());
+      if (handle_ == 0) return error{net::error_id::unexpected, "the device registered a session with handle 0"};
+      return event{registered{handle_}};
+    }
+    case cip::command::list_identity: {
+      auto ids = cip::decode_list_identity(*data, base);
+      if (!ids) return malformed("ListIdentity reply", ids.error());
+      return event{identities{std::move(ids.value())}};
+    }
+    case cip::command::list_services: {
+      auto found = cip::decode_list_services(*data, base);
+      if (!found) return malformed("ListServices reply", found.error());
+      return event{services{std::move(found.value())}};
+    }
+    default: break;
+  }
+  auto item = cip::decode_send_rr_data(*data, base);
+  if (!item) return malformed("SendRRData reply", item.error());
+  const auto at = static_cast<std::size_t>(item.value().data() - message.data());
+  auto rep = cip::decode_reply(item.value(), at);
+  if (!rep) return malformed("CIP reply", rep.error());
+  if (rep->service != (service_ | cip::reply_bit))
+    return error{net::error_id::unexpected,
+                 fmt::format("the device replied to service 0x{:02X} when asked for service 0x{:02X}",
+                             rep->service & 0x7F, service_)};
+  return event{cip_reply{std::move(rep.value())}};
+}
+
+void session::fail_with(input in, error e) {
+  if (!move(in)) return;
+  events_.emplace_back(std::move(e));
+}
+
+std::string session::partial_words(bool timed_out, std::string_view reason) const {
+  const auto cmd = command_name(expect_.command);
+  const bool in_header = framer_.pending() < cip::encap_header_size;
+  const auto what = in_header ? cmd + " reply header" : cmd + " reply";
+  const auto done = in_header ? framer_.pending() : framer_.pending() - cip::encap_header_size;
+  const auto n = in_header ? cip::encap_header_size : framer_.wanted() - cip::encap_header_size;
+  if (!reason.empty())
+    return fmt::format("receiving {} failed after {} of the {} bytes: {}", what, done, n, reason);
+  if (timed_out)
+    return done == 0 ? fmt::format("no {} from the device within the timeout", what)
+                     : fmt::format("the device sent {} of the {} bytes of {} and then nothing within the timeout",
+                                   done, n, what);
+  return done == 0 ? fmt::format("the device closed the connection instead of sending {}", what)
+                   : fmt::format("the device closed the connection after {} of the {} bytes of {}", done, n, what);
+}
+
+void session::handle_closed(std::string_view reason) {
+  if (state_ == st::registering || state_ == st::awaiting) {
+    auto words = partial_words(false, reason);
+    fail_with(input::peer_closed, error{net::error_id::closed, std::move(words)});
+  } else if (move(input::peer_closed)) {
+    events_.emplace_back(closed{});
+  }
+}
+
+void session::handle_timeout(clock::time_point now) {
+  const auto due = next_deadline();
+  if (!due || now < *due) return;
+  auto words = partial_words(true, {});
+  fail_with(input::timeout, error{net::error_id::timeout, std::move(words)});
+}
+
+std::optional<cip::bytes> session::poll_transmit() {
+  if (transmit_.empty()) return std::nullopt;
+  auto b = std::move(transmit_.front());
+  transmit_.pop_front();
+  return b;
+}
+
+std::optional<event> session::poll_event() {
+  if (events_.empty()) return std::nullopt;
+  auto e = std::move(events_.front());
+  events_.pop_front();
+  return e;
+}
+
+std::optional<clock::time_point> session::next_deadline() const {
+  if (state_ == st::registering || state_ == st::awaiting) return deadline_;
+  return std::nullopt;
 }
 
 }  // namespace edsc::live

@@ -8,14 +8,14 @@
 
 #include "cip/bytes.hpp"
 #include "cip/file_transfer.hpp"
-#include "live/session.hpp"
+#include "live/client.hpp"
 
 namespace edsc::live {
 
 using cip::eds_file_instance;
 
 // The whole file, its checksum checked; a refusal or a broken transfer is a
-// net_error in words.
-[[nodiscard]] result<cip::bytes> upload_file(session& s, std::uint32_t instance = eds_file_instance);
+// error in words.
+[[nodiscard]] result<cip::bytes> upload_file(client& s, std::uint32_t instance = eds_file_instance);
 
 }  // namespace edsc::live

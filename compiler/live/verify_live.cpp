@@ -1,7 +1,5 @@
 #include "live/verify_live.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 
 #include <fmt/format.h>
@@ -9,10 +7,9 @@
 #include "cip/encap.hpp"
 #include "cip/status.hpp"
 #include "base/plural.hpp"
-#include "live/interrupt.hpp"
+#include "live/facts.hpp"
 #include "live/io.hpp"
 #include "live/plan.hpp"
-#include "live/session.hpp"
 
 namespace edsc::live {
 
@@ -28,12 +25,14 @@ span at(const value& v, const model::origin& fallback) {
 
 std::string revision_text(unsigned major, unsigned minor) { return fmt::format("{}.{}", major, minor); }
 
+// The comparison of the facts with the EDS, check by check; it asks nothing.
 struct checker {
-  checker(const model::device& d, const live_options& o, live_report& r) : dev(d), opt(o), out(r) {}
+  checker(const model::device& d, const live_facts& facts, live_report& r) : dev(d), f(facts), out(r) {}
   const model::device& dev;
-  const live_options& opt;
+  const live_facts& f;
   live_report& out;
   std::optional<cip::identity> device_id;
+  bool finished_said = false;
 
   void row(std::string check, std::string eds, std::string device, verdict v) {
     check_row r;
@@ -112,42 +111,23 @@ struct checker {
 
   std::string assem_name(const model::assembly& a) { return fmt::format("Assem{}", a.number); }
 
-  // Whether the device answers for the Assembly class itself (its Max
-  // Instance): then an instance it calls unknown is certainly not there.
-  std::optional<bool> assembly_class;
-  result<bool> assembly_class_answers(session& s) {
-    if (!assembly_class) {
-      auto r = s.request(cip::service::get_attribute_single, cip::logical_path(cip::class_id::assembly, 0, 2));
-      if (auto* e = failed(r)) return *e;
-      assembly_class = std::get<cip::reply>(r).is(cip::general_status::success);
-    }
-    return *assembly_class;
-  }
-
   // Attribute 4 of each assembly instance the EDS locates.
-  std::optional<net_error> assemblies(session& s) {
+  void assemblies() {
     const auto targets = plan_assemblies(dev);
     for (std::size_t i = 0; i < targets.size(); ++i) {
       const auto& t = targets[i];
       const auto check = fmt::format("{} size (instance {})", assem_name(*t.assem), t.instance);
       const auto eds_size = t.eds_size ? std::to_string(*t.eds_size) : std::string("(not given)");
-      if (halted(check, eds_size)) continue;
-      step(fmt::format("reading the size of assembly instance {} ({} of {})", t.instance, i + 1, targets.size()));
-      auto r = s.request(cip::service::get_attribute_single, cip::logical_path(cip::class_id::assembly, t.instance, 4));
-      if (auto* e = failed(r)) return lost(*e, check, eds_size);
-      const auto& rep = std::get<cip::reply>(r);
+      if (unreached(check, eds_size, i < f.assemblies.size())) continue;
+      const auto& rep = f.assemblies[i].size;
       const auto where = at(t.assem->size, t.assem->from);
       // Path destination unknown is OpENer's answer.
-      if (rep.is(cip::general_status::path_destination_unknown) || rep.is(cip::general_status::object_does_not_exist)) {
-        auto known = assembly_class_answers(s);
-        if (auto* e = failed(known)) return lost(*e, check, eds_size);
-        if (std::get<bool>(known)) {
-          row(check, eds_size, "no such instance", verdict::mismatch);
-          diag(diag_id::live_assembly_missing, t.named_at,
-               fmt::format("the device has no assembly instance {} ({}), which {} says it has", t.instance,
-                           cip::describe_status(rep.general, rep.additional), assem_name(*t.assem)));
-          continue;
-        }
+      if (f.assemblies[i].class_answers.value_or(false)) {
+        row(check, eds_size, "no such instance", verdict::mismatch);
+        diag(diag_id::live_assembly_missing, t.named_at,
+             fmt::format("the device has no assembly instance {} ({}), which {} says it has", t.instance,
+                         cip::describe_status(rep.general, rep.additional), assem_name(*t.assem)));
+        continue;
       }
       if (rep.general != 0 || rep.data.size() < 2) {
         const auto why = rep.general != 0 ? cip::describe_status(rep.general, rep.additional)
@@ -174,7 +154,6 @@ struct checker {
              fmt::format("assembly instance {} holds {} on the device, {} says {}", t.instance, plural(size, "byte"),
                          assem_name(*t.assem), *t.eds_size));
     }
-    return std::nullopt;
   }
 
   // The field a refusal is about: the size field when written, else the
@@ -238,47 +217,40 @@ struct checker {
     }
   }
 
-  std::optional<net_error> connections(session& s) {
-    std::uint16_t serial = static_cast<std::uint16_t>(0x4500 + (::getpid() & 0xFF));
+  void connections() {
     const auto plans = plan_connections(dev);
     for (std::size_t i = 0; i < plans.size(); ++i) {
       const auto& p = plans[i];
       const auto name = fmt::format("Connection{}", p.facts.number);
       const auto sizes = fmt::format("O->T {} T->O {} cfg {}", p.facts.output_size, p.facts.input_size, p.facts.config_size);
-      if (halted(name, sizes)) continue;
-      if (!p.not_openable.empty()) {
+      if (unreached(name, sizes, i < f.connections.size())) continue;
+      if (!p.not_openable.empty() || !f.connections[i]) {
         row(name, sizes, "not opened", verdict::not_tried);
         diag(diag_id::live_not_checked, p.conn->from.where,
              fmt::format("{} not opened: {}", name, p.not_openable));
         continue;
       }
-      const auto window = io_window(opt, p.to_rpi_us);
-      step(fmt::format("opening {} ({} of {}) and watching its I/O for {:.1f} s", name, i + 1, plans.size(),
-                       window.count() / 1000.0));
-      const auto o = exercise_connection(s, p, ++serial, window);
-      if (!o.opened) {
-        if (o.failure) return lost(*o.failure, name, sizes);
-        const std::uint16_t ext =
-            o.general == cip::code(cip::general_status::connection_failure) && !o.additional.empty() ? o.additional[0] : 0;
-        if (const auto* why = busy_reason(o.general, ext)) {
-          row(name, sizes, fmt::format("busy 0x{:02X}/0x{:04X}", o.general, ext), verdict::not_tried);
-          out.rows.back().refused = std::pair<int, int>{o.general, ext};
-          out.busy.push_back(fmt::format("{} not checked: the device refused it with {}: {}; that says nothing "
-                                         "of the EDS",
-                                         name, cip::describe_status(o.general, o.additional), why));
-          continue;
-        }
-        row(name, sizes, fmt::format("refused 0x{:02X}/0x{:04X}", o.general, ext), verdict::mismatch);
-        out.rows.back().refused = std::pair<int, int>{o.general, ext};
-        diag(diag_id::live_connection_refused, refusal_site(p, ext),
-             fmt::format("{} refused: {}", name, refusal_words(p, o)));
-        continue;
-      }
-      frames(p, o, name, sizes);
-      if (o.failure) return lost(*o.failure, {}, {});
-      if (o.interrupted) out.interrupted = interruption();
+      const auto& o = *f.connections[i];
+      if (o.opened) frames(p, o, name, sizes);
+      else refused(p, o, name, sizes);
     }
-    return std::nullopt;
+  }
+
+  void refused(const connection_plan& p, const connection_outcome& o, const std::string& name,
+               const std::string& sizes) {
+    const std::uint16_t ext =
+        o.general == cip::code(cip::general_status::connection_failure) && !o.additional.empty() ? o.additional[0] : 0;
+    if (const auto* why = busy_reason(o.general, ext)) {
+      row(name, sizes, fmt::format("busy 0x{:02X}/0x{:04X}", o.general, ext), verdict::not_tried);
+      out.rows.back().refused = std::pair<int, int>{o.general, ext};
+      out.busy.push_back(fmt::format("{} not checked: the device refused it with {}: {}; that says nothing "
+                                     "of the EDS",
+                                     name, cip::describe_status(o.general, o.additional), why));
+      return;
+    }
+    row(name, sizes, fmt::format("refused 0x{:02X}/0x{:04X}", o.general, ext), verdict::mismatch);
+    out.rows.back().refused = std::pair<int, int>{o.general, ext};
+    diag(diag_id::live_connection_refused, refusal_site(p, ext), fmt::format("{} refused: {}", name, refusal_words(p, o)));
   }
 
   void frames(const connection_plan& p, const connection_outcome& o, const std::string& name, const std::string& sizes) {
@@ -337,37 +309,19 @@ struct checker {
                                     st.sent};
   }
 
-  // The run's progress, for a user who waits.
-  void step(const std::string& what) {
-    if (opt.progress) opt.progress(what);
-  }
-
-  // Once the device stopped answering or a signal came, every check left
-  // gets a row saying why it was not made. True when `check` is one.
-  bool halted(const std::string& check, const std::string& eds) {
-    if (!stop_reason.empty()) {
-      row(check, eds, stop_reason, verdict::not_tried);
-      return true;
+  // A check without its fact: the run stopped before it, or during it (the
+  // first such check after a failure during a check). Its row says which.
+  bool unreached(const std::string& check, const std::string& eds, bool have) {
+    if (have) return false;
+    std::string words = f.failure || !f.interrupted ? "not reached" : "not reached: interrupted";
+    if (f.failure && f.during_check && !finished_said) {
+      words = "not finished";
+      finished_said = true;
     }
-    if (const int sig = interruption()) {
-      out.interrupted = sig;
-      stop_reason = "not reached: interrupted";
-      row(check, eds, stop_reason, verdict::not_tried);
-      return true;
-    }
-    return false;
+    row(check, eds, std::move(words), verdict::not_tried);
+    return true;
   }
-
-  // The run failed during `check` (the device stopped answering, mostly):
-  // its row says so, the failure ends the run.
-  net_error lost(const net_error& e, const std::string& check, const std::string& eds) {
-    if (!check.empty()) row(check, eds, "not finished", verdict::not_tried);
-    stop_reason = "not reached";
-    return e;
-  }
-  std::string stop_reason;
 };
-
 }  // namespace
 
 std::optional<std::string> io_rate_warning(std::string_view name, const io_stats& st, std::uint32_t to_api_us) {
@@ -394,33 +348,26 @@ std::chrono::milliseconds io_window(const live_options& opt, std::uint32_t to_rp
   return std::chrono::milliseconds(std::max<long long>(300, ten_rpis_ms));
 }
 
-live_report verify_live(const endpoint& device, const model::device& dev, const live_options& opt) {
+live_report judge_facts(const model::device& dev, const live_facts& facts, bool connections) {
   live_report out;
-  checker ck(dev, opt, out);
-  ck.step(fmt::format("connecting to {}", device.text));
-  auto opened = session::open(device, opt.timeout);
-  if (auto* e = failed(opened)) {
-    out.failure = *e;
-    return out;
-  }
-  auto& s = std::get<session>(opened);
-  if (!ck.halted("identity", "[Device]")) {
-    ck.step("reading the identity");
-    auto id = read_identity(s);
-    if (auto* e = failed(id)) out.failure = ck.lost(*e, "identity", "[Device]");
-    else ck.identity(std::get<cip::identity>(id));
-  }
-  // After a failure these only add the rows of what was not reached.
-  if (auto e = ck.assemblies(s)) out.failure = *e;
-  if (opt.connections) {
-    if (auto e = ck.connections(s)) out.failure = *e;
+  out.failure = facts.failure;
+  out.interrupted = facts.interrupted;
+  if (!facts.connected) return out;
+  checker ck(dev, facts, out);
+  if (!ck.unreached("identity", "[Device]", facts.identity.has_value())) ck.identity(*facts.identity);
+  ck.assemblies();
+  if (connections) {
+    ck.connections();
   } else {
     for (const auto& c : dev.connections) ck.row(fmt::format("Connection{}", c.number), "", "--connections not given", verdict::not_tried);
   }
-  s.close();
   std::stable_sort(out.diags.begin(), out.diags.end(),
                    [](const diagnostic& a, const diagnostic& b) { return a.where.begin < b.where.begin; });
   return out;
+}
+
+live_report verify_live(const net::endpoint& device, const model::device& dev, const live_options& opt) {
+  return judge_facts(dev, gather_facts(device, dev, opt), opt.connections);
 }
 
 std::string render_rows(const std::vector<check_row>& rows) {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "diag/diagnostic.hpp"
-#include "live/socket.hpp"
+#include "live/error.hpp"
 #include "model/device.hpp"
 
 namespace edsc::live {
@@ -52,14 +52,14 @@ struct check_row {
 struct live_report {
   diagnostics diags;
   std::vector<check_row> rows;  // also the checks made before a failure or an interruption
-  std::optional<net_error> failure;  // the device could not be talked to (any more): exit 2
+  std::optional<error> failure;  // the device could not be talked to (any more): exit 2
   // Connections the device refused for a reason of its own, not of the EDS
   // (another scanner owns them, no connection free), in words: exit 2.
   std::vector<std::string> busy;
   int interrupted = 0;  // the signal that ended the run early, or 0
 };
 
-[[nodiscard]] live_report verify_live(const endpoint& device, const model::device& dev, const live_options& opt);
+[[nodiscard]] live_report verify_live(const net::endpoint& device, const model::device& dev, const live_options& opt);
 
 // The live-io-rate finding for a connection's T->O frames (`st`, measured by
 // exercise_connection) against the API the device granted: none unless at

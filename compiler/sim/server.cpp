@@ -16,7 +16,8 @@
 #include <fmt/format.h>
 
 #include "cip/io_frame.hpp"
-#include "live/socket.hpp"
+#include "cip/stream_framer.hpp"
+#include "net/socket.hpp"
 #include "sim/inputs.hpp"
 #include "sim/sockets.hpp"
 
@@ -25,14 +26,13 @@ namespace edsc::sim {
 namespace {
 
 struct client {
-  live::fd sock;
+  net::fd sock;
   link l;
-  cip::bytes in;
+  cip::stream_framer in;
   clock::time_point last{};
 };
 
 constexpr std::size_t max_clients = 64;
-constexpr std::size_t max_message = cip::encap_header_size + 0xFFFF;
 
 // A reply that does not fit the socket's buffer at once ends the client:
 // a scanner reads its replies, one that does not is not served.
@@ -50,17 +50,15 @@ void handle_client(state& s, client& c, bool& drop, clock::time_point now) {
   }
   if (n < 0) return;
   c.last = now;
-  c.in.insert(c.in.end(), buf, buf + n);
-  while (c.in.size() >= cip::encap_header_size && !drop) {
-    const std::size_t len = c.in[2] | (c.in[3] << 8);
-    const auto total = cip::encap_header_size + len;
-    if (c.in.size() < total) break;
-    const auto out = handle_encap(s, c.l, cip::byte_view(c.in.data(), total), true, now);
+  c.in.feed(cip::byte_view(buf, static_cast<std::size_t>(n)));
+  while (!drop) {
+    auto msg = c.in.next();
+    if (!msg) drop = true;  // the stream lost its message boundaries
+    if (!msg || !msg->has_value()) break;
+    const auto out = handle_encap(s, c.l, **msg, true, now);
     if (out.reply && !send_reply(c.sock.get(), *out.reply)) drop = true;
     if (out.close) drop = true;
-    c.in.erase(c.in.begin(), c.in.begin() + static_cast<std::ptrdiff_t>(total));
   }
-  if (c.in.size() > max_message) drop = true;
 }
 
 // Reads what the control descriptor has; answers each whole line. False at
@@ -98,96 +96,133 @@ std::string listening_line(const state& s, const std::string& address, std::uint
   return line + "}";
 }
 
-std::string serve(state& s, const server_options& opt, const std::atomic<bool>& stop,
-                  const std::function<void(const std::string&)>& emit) {
-  auto opened = open_sockets(opt);
-  if (auto* e = live::failed(opened)) return e->message;
-  auto& [tcp, udp, io, port] = std::get<sockets>(opened);
-  s.dev.id.sin_port = port;
-  emit(listening_line(s, opt.address, port, opt.io_port));
+namespace {
 
+// What the loop keeps between turns besides the device's state.
+struct loop {
+  loop(sockets& s, const server_options& o) : socks(s), opt(o), control_fd(o.control_fd) {}
+  sockets& socks;
+  const server_options& opt;
   std::vector<client> clients;
-  std::vector<std::uint8_t> frame(cip::max_io_frame_size);  // an O->T frame, whole
+  std::vector<std::uint8_t> frame = std::vector<std::uint8_t>(cip::max_io_frame_size);  // an O->T frame, whole
   std::uint64_t produced = 0;
-  int control_fd = opt.control_fd;
+  int control_fd = -1;
   std::string control_pending;
-  const auto idle = std::chrono::seconds(opt.idle_tcp_s);
-  auto flush_log = [&] {
-    for (const auto& line : s.log) emit(line);
-    s.log.clear();
-  };
-  while (!stop.load()) {
-    auto now = clock::now();
-    for (const auto& f : produce_io(s, now)) {
-      sockaddr_in to{};
-      to.sin_family = AF_INET;
-      to.sin_port = htons(opt.io_port);
-      to.sin_addr.s_addr = f.ip;
-      if (::sendto(io.get(), f.frame.data(), f.frame.size(), 0, reinterpret_cast<const sockaddr*>(&to), sizeof to) > 0)
-        ++produced;
-    }
-    flush_log();
-    // Wake for the next frame or timeout, and at least every 100 ms to see `stop`.
-    auto wake = clock::now() + std::chrono::milliseconds(100);
-    if (const auto d = next_deadline(s); d && *d < wake) wake = *d;
-    const auto wait = std::chrono::duration_cast<std::chrono::microseconds>(wake - clock::now()).count();
-    std::vector<pollfd> fds = {{tcp.get(), POLLIN, 0}, {udp.get(), POLLIN, 0}, {io.get(), POLLIN, 0}, {control_fd, POLLIN, 0}};
-    for (const auto& c : clients) fds.push_back({c.sock.get(), POLLIN, 0});
-    // ppoll for sub-millisecond RPIs; a negative wait means a deadline is already due.
-    timespec ts{0, wait > 0 ? static_cast<long>(wait % 1'000'000) * 1000 : 0};
-    ts.tv_sec = wait > 0 ? wait / 1'000'000 : 0;
-    const int ready = ::ppoll(fds.data(), fds.size(), &ts, nullptr);
-    if (ready < 0 && errno != EINTR) return fmt::format("poll failed: {}", std::strerror(errno));
-    now = clock::now();
-    if (ready > 0) {
-      if (fds[0].revents & POLLIN) {
-        sockaddr_in peer{};
-        socklen_t len = sizeof peer;
-        live::fd c(::accept4(tcp.get(), reinterpret_cast<sockaddr*>(&peer), &len, SOCK_NONBLOCK | SOCK_CLOEXEC));
-        if (c.valid() && clients.size() < max_clients) {
-          const link l{peer.sin_addr.s_addr, 0, local_address(c.get())};
-          clients.push_back({std::move(c), l, {}, now});
-        }
-      }
-      if (fds[1].revents & POLLIN) {
-        std::uint8_t buf[2048];
-        if (const auto d = receive(udp.get(), buf, sizeof buf)) {
-          link l{d->peer.sin_addr.s_addr, 0, d->local_ip};
-          const auto out = handle_encap(s, l, cip::byte_view(buf, d->size), false, now);
-          if (out.reply)
-            (void)::sendto(udp.get(), out.reply->data(), out.reply->size(), 0,
-                           reinterpret_cast<const sockaddr*>(&d->peer), sizeof d->peer);
-        }
-      }
-      if (fds[2].revents & POLLIN)
-        for (int i = 0; i < 64; ++i) {  // drain what is there, boundedly
-          sockaddr_in peer{};
-          socklen_t len = sizeof peer;
-          const auto n = ::recvfrom(io.get(), frame.data(), frame.size(), 0, reinterpret_cast<sockaddr*>(&peer), &len);
-          if (n <= 0) break;
-          consume_io(s, cip::byte_view(frame.data(), static_cast<std::size_t>(n)), peer.sin_addr.s_addr, now);
-        }
-      if ((fds[3].revents & (POLLIN | POLLHUP | POLLERR)) && !read_control(s, control_fd, control_pending, emit))
-        control_fd = -1;  // poll() skips a negative descriptor
-      for (std::size_t i = 0; i + 4 < fds.size(); ++i) {  // clients accepted just now wait a turn
-        bool drop = false;
-        if (fds[4 + i].revents & (POLLIN | POLLHUP | POLLERR)) handle_client(s, clients[i], drop, now);
-        if (drop) clients[i].sock = live::fd();
-      }
-    }
-    for (auto& c : clients)
-      if (now - c.last > idle) c.sock = live::fd();
-    std::erase_if(clients, [](const client& c) { return !c.sock.valid(); });
-    flush_log();
+};
+
+void send_produced(state& s, loop& lp, clock::time_point now) {
+  for (const auto& f : produce_io(s, now)) {
+    sockaddr_in to{};
+    to.sin_family = AF_INET;
+    to.sin_port = htons(lp.opt.io_port);
+    to.sin_addr.s_addr = f.ip;
+    if (::sendto(lp.socks.io.get(), f.frame.data(), f.frame.size(), 0, reinterpret_cast<const sockaddr*>(&to),
+                 sizeof to) > 0)
+      ++lp.produced;
   }
+}
+
+// Waits for the next frame or timeout due, and at least every 100 ms to see
+// `stop`; the descriptors polled (the clients' from index 4), or -1 and errno.
+int wait_ready(const state& s, const loop& lp, std::vector<pollfd>& fds) {
+  auto wake = clock::now() + std::chrono::milliseconds(100);
+  if (const auto d = next_deadline(s); d && *d < wake) wake = *d;
+  const auto wait = std::chrono::duration_cast<std::chrono::microseconds>(wake - clock::now()).count();
+  fds = {{lp.socks.tcp.get(), POLLIN, 0}, {lp.socks.udp.get(), POLLIN, 0}, {lp.socks.io.get(), POLLIN, 0},
+         {lp.control_fd, POLLIN, 0}};
+  for (const auto& c : lp.clients) fds.push_back({c.sock.get(), POLLIN, 0});
+  // ppoll for sub-millisecond RPIs; a negative wait means a deadline is already due.
+  timespec ts{0, wait > 0 ? static_cast<long>(wait % 1'000'000) * 1000 : 0};
+  ts.tv_sec = wait > 0 ? wait / 1'000'000 : 0;
+  return ::ppoll(fds.data(), fds.size(), &ts, nullptr);
+}
+
+void accept_client(loop& lp, clock::time_point now) {
+  sockaddr_in peer{};
+  socklen_t len = sizeof peer;
+  net::fd c(::accept4(lp.socks.tcp.get(), reinterpret_cast<sockaddr*>(&peer), &len, SOCK_NONBLOCK | SOCK_CLOEXEC));
+  if (c.valid() && lp.clients.size() < max_clients) {
+    const link l{peer.sin_addr.s_addr, 0, local_address(c.get())};
+    lp.clients.push_back({std::move(c), l, cip::stream_framer{}, now});
+  }
+}
+
+void answer_datagram(state& s, const loop& lp, clock::time_point now) {
+  std::uint8_t buf[2048];
+  const int udp = lp.socks.udp.get();
+  if (const auto d = receive(udp, buf, sizeof buf)) {
+    link l{d->peer.sin_addr.s_addr, 0, d->local_ip};
+    const auto out = handle_encap(s, l, cip::byte_view(buf, d->size), false, now);
+    if (out.reply)
+      (void)::sendto(udp, out.reply->data(), out.reply->size(), 0, reinterpret_cast<const sockaddr*>(&d->peer),
+                     sizeof d->peer);
+  }
+}
+
+void drain_io(state& s, loop& lp, clock::time_point now) {
+  for (int i = 0; i < 64; ++i) {  // drain what is there, boundedly
+    sockaddr_in peer{};
+    socklen_t len = sizeof peer;
+    const auto n = ::recvfrom(lp.socks.io.get(), lp.frame.data(), lp.frame.size(), 0,
+                              reinterpret_cast<sockaddr*>(&peer), &len);
+    if (n <= 0) break;
+    consume_io(s, cip::byte_view(lp.frame.data(), static_cast<std::size_t>(n)), peer.sin_addr.s_addr, now);
+  }
+}
+
+void handle_ready(state& s, loop& lp, const std::vector<pollfd>& fds, clock::time_point now,
+                  const std::function<void(const std::string&)>& emit) {
+  if (fds[0].revents & POLLIN) accept_client(lp, now);
+  if (fds[1].revents & POLLIN) answer_datagram(s, lp, now);
+  if (fds[2].revents & POLLIN) drain_io(s, lp, now);
+  if ((fds[3].revents & (POLLIN | POLLHUP | POLLERR)) && !read_control(s, lp.control_fd, lp.control_pending, emit))
+    lp.control_fd = -1;  // poll() skips a negative descriptor
+  for (std::size_t i = 0; i + 4 < fds.size(); ++i) {  // clients accepted just now wait a turn
+    bool drop = false;
+    if (fds[4 + i].revents & (POLLIN | POLLHUP | POLLERR)) handle_client(s, lp.clients[i], drop, now);
+    if (drop) lp.clients[i].sock = net::fd();
+  }
+}
+
+std::string stopped_line(const state& s, std::uint64_t produced) {
   rusage ru{};
   ::getrusage(RUSAGE_SELF, &ru);
   const double cpu = static_cast<double>(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) +
                      static_cast<double>(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec) / 1e6;
   std::uint64_t late = 0;
   for (const auto& c : s.connections) late += c.late;
-  emit(fmt::format("{{\"event\":\"stopped\",\"produced\":{},\"late\":{},\"open_connections\":{},\"cpu_s\":{:.3f}}}",
-                   produced, late, s.connections.size(), cpu));
+  return fmt::format("{{\"event\":\"stopped\",\"produced\":{},\"late\":{},\"open_connections\":{},\"cpu_s\":{:.3f}}}",
+                     produced, late, s.connections.size(), cpu);
+}
+
+}  // namespace
+
+std::string serve(state& s, const server_options& opt, const std::atomic<bool>& stop,
+                  const std::function<void(const std::string&)>& emit) {
+  auto opened = open_sockets(opt);
+  if (!opened) return opened.error().message;
+  loop lp(*opened, opt);
+  s.dev.id.sin_port = opened->port;
+  emit(listening_line(s, opt.address, opened->port, opt.io_port));
+  const auto idle = std::chrono::seconds(opt.idle_tcp_s);
+  auto flush_log = [&] {
+    for (const auto& line : s.log) emit(line);
+    s.log.clear();
+  };
+  std::vector<pollfd> fds;
+  while (!stop.load()) {
+    send_produced(s, lp, clock::now());
+    flush_log();
+    const int ready = wait_ready(s, lp, fds);
+    if (ready < 0 && errno != EINTR) return fmt::format("poll failed: {}", std::strerror(errno));
+    const auto now = clock::now();
+    if (ready > 0) handle_ready(s, lp, fds, now, emit);
+    for (auto& c : lp.clients)
+      if (now - c.last > idle) c.sock = net::fd();
+    std::erase_if(lp.clients, [](const client& c) { return !c.sock.valid(); });
+    flush_log();
+  }
+  emit(stopped_line(s, lp.produced));
   return {};
 }
 

@@ -24,16 +24,16 @@ std::string address_text(const sockaddr_in& a) {
 // socket listen on an address and port another one listens on, nor on one
 // that overlaps it through 0.0.0.0 (bind or listen fails with EADDRINUSE;
 // tests/sim/test_sim_ports.cpp starts a second simulator to see it).
-live::result<live::fd> tcp_listener(const sockaddr_in& at) {
-  live::fd s(::socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0));
-  if (!s.valid()) return live::net_error{fmt::format("cannot create a TCP socket: {}", std::strerror(errno))};
+net::result<net::fd> tcp_listener(const sockaddr_in& at) {
+  net::fd s(::socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0));
+  if (!s.valid()) return net::error{net::error_id::socket, fmt::format("cannot create a TCP socket: {}", std::strerror(errno))};
   const int one = 1;
   ::setsockopt(s.get(), SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
   if (::bind(s.get(), reinterpret_cast<const sockaddr*>(&at), sizeof at) == 0 && ::listen(s.get(), 16) == 0) return s;
   if (errno == EADDRINUSE)
-    return live::net_error{
-        fmt::format("TCP port {} on {} is already in use by another program", ntohs(at.sin_port), address_text(at))};
-  return live::net_error{fmt::format("cannot listen on TCP {}: {}", live::to_string(at), std::strerror(errno))};
+    return net::error{net::error_id::socket,
+                      fmt::format("TCP port {} on {} is already in use by another program", ntohs(at.sin_port), address_text(at))};
+  return net::error{net::error_id::socket, fmt::format("cannot listen on TCP {}: {}", net::to_string(at), std::strerror(errno))};
 }
 
 std::uint16_t bound_port(int sock) {
@@ -75,31 +75,32 @@ std::optional<datagram> receive(int sock, std::uint8_t* buf, std::size_t len) {
   return d;
 }
 
-live::result<sockets> open_sockets(const server_options& opt) {
+net::result<sockets> open_sockets(const server_options& opt) {
   sockaddr_in at{};
   at.sin_family = AF_INET;
   if (::inet_pton(AF_INET, opt.address.c_str(), &at.sin_addr) != 1)
-    return live::net_error{fmt::format("--address {}: not an IPv4 address", opt.address)};
+    return net::error{net::error_id::address, fmt::format("--address {}: not an IPv4 address", opt.address)};
   if (opt.port == opt.io_port)
-    return live::net_error{fmt::format("--port {} is the class 1 I/O port: encapsulation needs a port of its own", opt.port)};
+    return net::error{net::error_id::address, fmt::format("--port {} is the class 1 I/O port: encapsulation needs a port of its own", opt.port)};
   sockets out;
   at.sin_port = htons(opt.port);
   auto tcp = tcp_listener(at);
-  if (auto* e = live::failed(tcp)) return *e;
-  out.tcp = std::move(std::get<live::fd>(tcp));
+  if (!tcp) return tcp.error();
+  out.tcp = std::move(*tcp);
   out.port = bound_port(out.tcp.get());
   at.sin_port = htons(out.port);
-  auto udp = live::udp_socket(at);
-  if (auto* e = live::failed(udp)) return *e;
-  out.udp = std::move(std::get<live::fd>(udp));
+  auto udp = net::udp_socket(at);
+  if (!udp) return udp.error();
+  out.udp = std::move(*udp);
   const int one = 1;
   ::setsockopt(out.udp.get(), IPPROTO_IP, IP_PKTINFO, &one, sizeof one);
   at.sin_port = htons(opt.io_port);
-  auto io = live::udp_socket(at);
-  if (auto* e = live::failed(io))
-    return live::net_error{e->message + " (class 1 I/O: a device and a scanner on one address both need it; give the "
-                                        "simulator an address of its own with --address)"};
-  out.io = std::move(std::get<live::fd>(io));
+  auto io = net::udp_socket(at);
+  if (!io)
+    return net::error{net::error_id::socket,
+                      io.error().message + " (class 1 I/O: a device and a scanner on one address both need it; give "
+                                           "the simulator an address of its own with --address)"};
+  out.io = std::move(*io);
   return out;
 }
 

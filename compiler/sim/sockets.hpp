@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <optional>
 
-#include "live/socket.hpp"
+#include "net/socket.hpp"
 #include "sim/server.hpp"
 
 namespace edsc::sim {
@@ -16,10 +16,10 @@ namespace edsc::sim {
 // TCP and UDP encapsulation on one port (with --port 0, the one the system
 // picks for TCP), UDP for class 1 I/O; all at the address asked.
 struct sockets {
-  live::fd tcp, udp, io;
+  net::fd tcp, udp, io;
   std::uint16_t port = 0;
 };
-[[nodiscard]] live::result<sockets> open_sockets(const server_options& opt);
+[[nodiscard]] net::result<sockets> open_sockets(const server_options& opt);
 
 // The local address of a connected socket (network order), 0 when unknown.
 [[nodiscard]] std::uint32_t local_address(int sock);

@@ -28,6 +28,7 @@
 #include "emit/emit_json.hpp"
 #include "emit/header.hpp"
 #include "lower/lower.hpp"
+#include "live/session.hpp"
 #include "lsp/jsonrpc.hpp"
 #include "lsp/server.hpp"
 #include "lsp/transport.hpp"
@@ -434,4 +435,74 @@ inline std::string sim_body(std::string_view input) {
   return {};
 }
 
+// The client's session machine (live/session.hpp) fed a device's side of a
+// conversation: each step is a byte, below 0xF0 the length of the chunk of
+// bytes that follows it, 0xF0 the deadline passing, 0xF1 the peer closing,
+// 0xF2 a reset, 0xF3 the client closing. The session registers first; each
+// time it is idle again it asks the next of ListIdentity, ListServices and a
+// Get_Attribute_Single, so replies that pass every check reach the next request.
+inline std::string session_check_transmit(const live::session& s, const cip::bytes& out) {
+  const auto h = cip::decode_encap_header(out);
+  if (!h || h->length + cip::encap_header_size != out.size()) return "a request whose length field does not count its bytes";
+  if (h->session != s.handle() && s.handle() != 0) return "a request carrying another session handle than the one granted";
+  return {};
+}
+
+inline std::string session_check_event(const live::session& s, const live::event& ev) {
+  if (const auto* r = std::get_if<live::registered>(&ev); r && (r->handle == 0 || r->handle != s.handle()))
+    return "a session registered with a handle it does not hold";
+  if (const auto* c = std::get_if<live::cip_reply>(&ev); c && c->reply.service != 0x8E)
+    return "a reply to another service taken as the answer";
+  if (const auto* e = std::get_if<live::error>(&ev); e && (e->id.empty() || e->message.empty()))
+    return "an error without an id or words";
+  return {};
+}
+
+inline std::string session_body(std::string_view input) {
+  using namespace std::chrono_literals;
+  live::session s(1000ms);
+  auto now = live::clock::time_point{} + std::chrono::hours(1);
+  // What the session has to send and to say, checked as soon as it has it.
+  auto drain = [&s]() -> std::string {
+    while (auto out = s.poll_transmit())
+      if (auto broken = session_check_transmit(s, *out); !broken.empty()) return broken;
+    while (auto ev = s.poll_event())
+      if (auto broken = session_check_event(s, *ev); !broken.empty()) return broken;
+    const bool waiting = s.current() == live::session::state::registering || s.current() == live::session::state::awaiting;
+    if (waiting != s.next_deadline().has_value()) return "a deadline without a request under way, or the reverse";
+    return {};
+  };
+  s.register_session(now);
+  if (auto broken = drain(); !broken.empty()) return broken;
+  unsigned asked = 0;
+  const auto b = reinterpret_cast<const std::uint8_t*>(input.data());
+  for (std::size_t at = 0; at < input.size();) {
+    const auto op = b[at++];
+    if (op < 0xF0) {
+      const std::size_t n = std::min<std::size_t>(op, input.size() - at);
+      s.handle_bytes(cip::byte_view(b + at, n), now);
+      at += n;
+    } else if (op == 0xF0) {
+      if (const auto d = s.next_deadline()) now = *d;
+      s.handle_timeout(now);
+    } else if (op == 0xF1) {
+      s.handle_closed({});
+    } else if (op == 0xF2) {
+      s.handle_closed("Connection reset by peer");
+    } else if (op == 0xF3) {
+      s.close();
+    }
+    if (auto broken = drain(); !broken.empty()) return broken;
+    if (s.current() != live::session::state::idle || s.handle() == 0) continue;
+    switch (asked++ % 3) {
+      case 0: s.list_identity(now); break;
+      case 1: s.list_services(now); break;
+      default:
+        s.request(cip::service::get_attribute_single,
+                  cip::encode_request(cip::service::get_attribute_single, cip::logical_path(cip::class_id::identity, 1, 7)), now);
+    }
+    if (auto broken = drain(); !broken.empty()) return broken;
+  }
+  return {};
+}
 }  // namespace edsc::fuzz

@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include "cip/encap.hpp"
+#include "cip/stream_framer.hpp"
 #include "netns/private_loopback.hpp"
 
 namespace edsc::live_test {
@@ -26,20 +27,22 @@ namespace edsc::live_test {
 // What the server does once a client has connected: `conn` is the socket.
 using behaviour = std::function<void(int conn, const std::atomic<bool>& stop)>;
 
-// Reads one encapsulation message (header + its length) or gives up.
+// Reads one encapsulation message (header + its length) or gives up. It
+// reads no further than the message, so the next call starts at the next one.
 inline cip::bytes read_message(int s, const std::atomic<bool>& stop) {
-  cip::bytes b;
-  std::size_t want = cip::encap_header_size;
-  while (b.size() < want && !stop) {
+  cip::stream_framer f;
+  while (!stop) {
+    auto m = f.next();
+    if (!m) return {};
+    if (m->has_value()) return std::move(**m);
     pollfd p{s, POLLIN, 0};
     if (::poll(&p, 1, 50) <= 0) continue;
     std::uint8_t buf[512];
-    const auto n = ::recv(s, buf, std::min(sizeof buf, want - b.size()), 0);
+    const auto n = ::recv(s, buf, std::min(sizeof buf, f.wanted() - f.pending()), 0);
     if (n <= 0) return {};
-    b.insert(b.end(), buf, buf + n);
-    if (b.size() == cip::encap_header_size) want += static_cast<std::size_t>(b[2] | (b[3] << 8));
+    f.feed(cip::byte_view(buf, static_cast<std::size_t>(n)));
   }
-  return b;
+  return {};
 }
 
 // A reply echoing the request's context, with the given command, handle and data.

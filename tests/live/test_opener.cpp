@@ -16,7 +16,7 @@
 
 #include "cip/connection_manager.hpp"
 #include "cip/message.hpp"
-#include "live/session.hpp"
+#include "live/client.hpp"
 #include "netns/live_support.hpp"
 #include "netns/run_edsc.hpp"
 #include "netns/test_network.hpp"
@@ -202,18 +202,18 @@ TEST_F(live_opener, a_minor_revision_newer_than_the_device_is_an_error) {
 // not the EDS being wrong: no diagnostic, a message, exit 2; Connection2
 // (input only) is still opened and checked.
 TEST_F(live_opener, an_owned_device_is_busy_not_wrong) {
-  auto to = live::resolve(device(), 44818);
-  ASSERT_FALSE(live::failed(to));
-  auto opened = live::session::open(std::get<live::endpoint>(to), std::chrono::seconds(3));
-  ASSERT_FALSE(live::failed(opened));
-  auto& owner = std::get<live::session>(opened);
+  auto to = net::resolve(device(), 44818);
+  ASSERT_TRUE(to.ok());
+  auto opened = live::client::open(*to, std::chrono::seconds(3));
+  ASSERT_TRUE(opened.ok());
+  auto& owner = *opened;
   auto fo = opener_connection1_request();
   fo.originator_vendor = 0x1234;   // not edsc's
   fo.originator_serial = 0x600D;
   fo.timeout_multiplier = 7;       // x512: 15 s at 30 ms
   const auto reply = owner.request_raw(cip::service::forward_open, cip::encode_forward_open(fo));
-  ASSERT_FALSE(live::failed(reply));
-  ASSERT_EQ(std::get<cip::reply>(reply).general, 0);
+  ASSERT_TRUE(reply.ok());
+  ASSERT_EQ(reply->general, 0);
 
   const auto r = run_edsc("verify --live " + device() + " " + quoted(opener_eds) + " --connections --color never");
   EXPECT_EQ(r.status, 2) << r.output;
@@ -239,13 +239,13 @@ TEST_F(live_opener, an_owned_device_is_busy_not_wrong) {
 // 6 or 7 once OpENer has had an I/O connection (it keeps saying so after
 // the connection is closed, so this tells only that one was opened).
 bool has_had_io_connection(const std::string& ip) {
-  auto to = live::resolve(ip, 44818);
-  if (live::failed(to)) return false;
-  auto s = live::session::open(std::get<live::endpoint>(to), std::chrono::seconds(1));
-  if (live::failed(s)) return false;
-  const auto id = live::read_identity(std::get<live::session>(s));
-  if (live::failed(id)) return false;
-  const auto ext = (std::get<cip::identity>(id).status >> 4) & 0xF;
+  auto to = net::resolve(ip, 44818);
+  if (!to) return false;
+  auto s = live::client::open(*to, std::chrono::seconds(1));
+  if (!s) return false;
+  const auto id = live::read_identity(*s);
+  if (!id) return false;
+  const auto ext = (id->status >> 4) & 0xF;
   return ext == 6 || ext == 7;
 }
 

@@ -14,7 +14,7 @@
 #include <regex>
 #include <thread>
 
-#include "live/session.hpp"
+#include "live/client.hpp"
 #include "sim_network.hpp"
 #include "test_paths.hpp"
 
@@ -119,15 +119,15 @@ TEST_F(sim_ports, port_0_reports_the_port_it_bound) {
   const auto port = std::stoi(m[1]);
   EXPECT_NE(port, 0) << log;
   EXPECT_EQ(std::stoi(m[2]), 2222) << log;
-  const auto to = live::resolve(net_->device_ip + ":" + std::to_string(port), 44818);
-  ASSERT_TRUE(std::holds_alternative<live::endpoint>(to));
-  const auto udp = live::list_identity_udp(std::get<live::endpoint>(to), std::chrono::milliseconds(3000));
-  ASSERT_TRUE(std::holds_alternative<std::vector<cip::identity>>(udp)) << std::get<live::net_error>(udp).message;
-  auto s = live::session::open(std::get<live::endpoint>(to), std::chrono::milliseconds(3000));
-  ASSERT_TRUE(std::holds_alternative<live::session>(s)) << std::get<live::net_error>(s).message;
-  const auto id = std::get<live::session>(s).list_identity();
-  ASSERT_TRUE(std::holds_alternative<cip::identity>(id));
-  EXPECT_EQ(std::get<cip::identity>(id).sin_port, port) << "the socket address names the port served";
+  const auto to = net::resolve(net_->device_ip + ":" + std::to_string(port), 44818);
+  ASSERT_TRUE(to.ok());
+  const auto udp = live::list_identity_udp(*to, std::chrono::milliseconds(3000));
+  ASSERT_TRUE(udp.ok()) << udp.error().message;
+  auto s = live::client::open(*to, std::chrono::milliseconds(3000));
+  ASSERT_TRUE(s.ok()) << s.error().message;
+  const auto id = s->list_identity();
+  ASSERT_TRUE(id.ok());
+  EXPECT_EQ(id->sin_port, port) << "the socket address names the port served";
   net_->stop(pid, SIGTERM);
 }
 
@@ -136,19 +136,19 @@ TEST_F(sim_ports, port_0_reports_the_port_it_bound) {
 TEST_F(sim_ports, list_identity_gives_the_address_the_scanner_reached) {
   std::string why;
   ASSERT_GT(net_->start_device({EDSC_BINARY, "sim", opener_eds}, "sim-any", why), 0) << why;
-  const auto to = std::get<live::endpoint>(live::resolve(net_->device_ip, 44818));
+  const auto to = *net::resolve(net_->device_ip, 44818);
   const auto udp = live::list_identity_udp(to, std::chrono::milliseconds(3000));
-  ASSERT_TRUE(std::holds_alternative<std::vector<cip::identity>>(udp)) << std::get<live::net_error>(udp).message;
-  const auto& a = std::get<std::vector<cip::identity>>(udp).front();
+  ASSERT_TRUE(udp.ok()) << udp.error().message;
+  const auto& a = udp->front();
   char text[INET_ADDRSTRLEN] = {};
   ::inet_ntop(AF_INET, a.sin_addr.data(), text, sizeof text);
   EXPECT_EQ(std::string(text), net_->device_ip);
   EXPECT_EQ(a.sin_port, 44818);
-  auto s = live::session::open(to, std::chrono::milliseconds(3000));
-  ASSERT_TRUE(std::holds_alternative<live::session>(s)) << std::get<live::net_error>(s).message;
-  const auto id = std::get<live::session>(s).list_identity();
-  ASSERT_TRUE(std::holds_alternative<cip::identity>(id));
-  ::inet_ntop(AF_INET, std::get<cip::identity>(id).sin_addr.data(), text, sizeof text);
+  auto s = live::client::open(to, std::chrono::milliseconds(3000));
+  ASSERT_TRUE(s.ok()) << s.error().message;
+  const auto id = s->list_identity();
+  ASSERT_TRUE(id.ok());
+  ::inet_ntop(AF_INET, id->sin_addr.data(), text, sizeof text);
   EXPECT_EQ(std::string(text), net_->device_ip);
 }
 

@@ -11,7 +11,7 @@
 #include <thread>
 
 #include "fuzz/fuzz_bodies.hpp"
-#include "live/session.hpp"
+#include "live/client.hpp"
 #include "sim_network.hpp"
 
 namespace edsc::sim_test {
@@ -30,14 +30,14 @@ class sim_scanners : public ::testing::Test {
     sim_ = start_sim(*net_, eds, why);
     ASSERT_GT(sim_, 0) << why;
   }
-  live::session open_session() {
-    auto to = live::resolve(net_->device_ip, cip::enip_port);
-    auto s = live::session::open(std::get<live::endpoint>(to), 3000ms);
-    EXPECT_FALSE(live::failed(s));
-    return std::move(std::get<live::session>(s));
+  live::client open_session() {
+    auto to = net::resolve(net_->device_ip, cip::enip_port);
+    auto s = live::client::open(*to, 3000ms);
+    EXPECT_TRUE(s.ok());
+    return std::move(*s);
   }
   // Forward_Open of the fuzz device's paths at 20 ms with multiplier 0 (a timeout of 80 ms).
-  static cip::reply forward_open(live::session& s, std::uint16_t serial, const char* path, std::uint16_t ot_size,
+  static cip::reply forward_open(live::client& s, std::uint16_t serial, const char* path, std::uint16_t ot_size,
                                  cip::conn_type to_type = cip::conn_type::point_to_point) {
     cip::forward_open_request fo;
     fo.to_connection_id = 0x60000000u + serial;
@@ -51,8 +51,8 @@ class sim_scanners : public ::testing::Test {
     cip::put_key(fo.path, {0xFFFF, 12, 7, 1, 2, true});
     cip::put_bytes(fo.path, live_test::unhex(path));
     auto r = s.request_raw(cip::service::forward_open, cip::encode_forward_open(fo));
-    EXPECT_FALSE(live::failed(r));
-    return live::failed(r) ? cip::reply{} : std::get<cip::reply>(r);
+    EXPECT_TRUE(r.ok());
+    return !r ? cip::reply{} : *r;
   }
   std::string log() const { return live_test::shell("cat " + net_->dir + "/sim.log").out; }
   std::unique_ptr<test_network> net_;

@@ -19,7 +19,7 @@
 
 #include "cip/io_frame.hpp"
 #include "fuzz/fuzz_bodies.hpp"
-#include "live/session.hpp"
+#include "live/client.hpp"
 #include "sim_network.hpp"
 #include "time_scale.hpp"
 
@@ -62,17 +62,17 @@ soak_result soak(unsigned connections, std::uint32_t rpi_us, int seconds) {
   const auto pid = start_sim(*net, eds, why);
   EXPECT_GT(pid, 0) << why;
   if (pid <= 0) return out;
-  auto to = live::resolve(net->device_ip, cip::enip_port);
-  auto opened = live::session::open(std::get<live::endpoint>(to), 3000ms);
-  EXPECT_FALSE(live::failed(opened));
-  if (live::failed(opened)) return out;
-  auto& s = std::get<live::session>(opened);
+  auto to = net::resolve(net->device_ip, cip::enip_port);
+  auto opened = live::client::open(*to, 3000ms);
+  EXPECT_TRUE(opened.ok());
+  if (!opened) return out;
+  auto& s = *opened;
   sockaddr_in local = s.local();
   local.sin_port = htons(cip::io_port);
-  auto udp = live::udp_socket(local);
-  EXPECT_FALSE(live::failed(udp));
-  if (live::failed(udp)) return out;
-  const int sock = std::get<live::fd>(udp).get();
+  auto udp = net::udp_socket(local);
+  EXPECT_TRUE(udp.ok());
+  if (!udp) return out;
+  const int sock = udp->get();
   const int buffer = 8 << 20;  // the scanner side must not be where frames are lost
   ::setsockopt(sock, SOL_SOCKET, SO_RCVBUF, &buffer, sizeof buffer);
 
@@ -90,24 +90,24 @@ soak_result soak(unsigned connections, std::uint32_t rpi_us, int seconds) {
     cip::put_key(fo.path, {0xFFFF, 12, 7, 1, 2, true});
     cip::put_bytes(fo.path, live_test::unhex("20 04 24 97 2C 98 2C 64"));
     auto rep = s.request_raw(cip::service::forward_open, cip::encode_forward_open(fo));
-    if (live::failed(rep) || std::get<cip::reply>(rep).general != 0) break;
-    const auto ok = cip::decode_forward_open_ok(std::get<cip::reply>(rep).data, 0);
+    if (!rep || rep->general != 0) break;
+    const auto ok = cip::decode_forward_open_ok(rep->data, 0);
     if (!ok.ok()) break;
     ot_of[ok->to_connection_id] = ok->ot_connection_id;
     ++out.opened;
   }
 
-  std::map<std::uint32_t, std::vector<live::clock::time_point>> arrivals;
+  std::map<std::uint32_t, std::vector<net::clock::time_point>> arrivals;
   std::map<std::uint32_t, std::pair<std::uint16_t, std::uint16_t>> sequences;  // first, last
-  const auto start = live::clock::now();
+  const auto start = net::clock::now();
   const auto end = start + std::chrono::seconds(seconds);
-  const auto heartbeat = std::min<live::clock::duration>(1s, std::chrono::microseconds(rpi_us) * 100);
+  const auto heartbeat = std::min<net::clock::duration>(1s, std::chrono::microseconds(rpi_us) * 100);
   auto next_heartbeat = start;
   std::uint32_t hb_sequence = 0;
-  sockaddr_in device = std::get<live::endpoint>(to).addr;
+  sockaddr_in device = to->addr;
   device.sin_port = htons(cip::io_port);
-  while (live::clock::now() < end) {  // bounded by `end`
-    if (live::clock::now() >= next_heartbeat) {
+  while (net::clock::now() < end) {  // bounded by `end`
+    if (net::clock::now() >= next_heartbeat) {
       ++hb_sequence;
       for (const auto& [to_id, ot_id] : ot_of) {
         cip::io_frame f;
@@ -119,7 +119,7 @@ soak_result soak(unsigned connections, std::uint32_t rpi_us, int seconds) {
       }
       next_heartbeat += heartbeat;
     }
-    if (!live::wait_readable(sock, std::min(end, next_heartbeat))) continue;
+    if (!net::wait_readable(sock, std::min(end, next_heartbeat))) continue;
     std::uint8_t buf[512];
     const auto n = ::recv(sock, buf, sizeof buf, 0);
     if (n <= 0) continue;
@@ -128,7 +128,7 @@ soak_result soak(unsigned connections, std::uint32_t rpi_us, int seconds) {
     auto& times = arrivals[f->connection_id];
     if (times.empty()) sequences[f->connection_id].first = f->sequence_count;
     sequences[f->connection_id].second = f->sequence_count;
-    times.push_back(live::clock::now());
+    times.push_back(net::clock::now());
   }
   s.close();
   net->stop(pid, SIGTERM);

@@ -13,7 +13,7 @@
 #include <thread>
 
 #include "cip/message.hpp"
-#include "live/session.hpp"
+#include "live/client.hpp"
 #include "netns/live_support.hpp"
 #include "sim_network.hpp"
 #include "test_paths.hpp"
@@ -44,10 +44,10 @@ class sim_tool : public ::testing::Test {
                      " --inputs " + live_test::quoted(toml) + " --stdin < " + live_test::quoted(fifo_path_);
     sim_ = net_->start_device({"sh", "-c", cmd}, "sim", why);
     ASSERT_GT(sim_, 0) << why;
-    auto to = live::resolve(net_->device_ip, cip::enip_port);
-    auto s = live::session::open(std::get<live::endpoint>(to), 3000ms);
-    ASSERT_FALSE(live::failed(s));
-    session_ = std::make_unique<live::session>(std::move(std::get<live::session>(s)));
+    auto to = net::resolve(net_->device_ip, cip::enip_port);
+    auto s = live::client::open(*to, 3000ms);
+    ASSERT_TRUE(s.ok());
+    session_ = std::make_unique<live::client>(std::move(*s));
   }
   void TearDown() override {
     if (fifo_ >= 0) ::close(fifo_);
@@ -55,8 +55,8 @@ class sim_tool : public ::testing::Test {
   cip::reply ask(std::uint8_t service, std::uint32_t cls, std::uint32_t instance, std::optional<std::uint32_t> attr,
                  const std::string& data = "") {
     auto r = session_->request(cip::service{service}, cip::logical_path(cls, instance, attr), unhex(data));
-    EXPECT_FALSE(live::failed(r));
-    return live::failed(r) ? cip::reply{} : std::get<cip::reply>(r);
+    EXPECT_TRUE(r.ok());
+    return !r ? cip::reply{} : *r;
   }
   std::string log() const { return live_test::shell("cat " + net_->dir + "/sim.log").out; }
   // Writes a control line and waits (5 s at most) for the log to hold `expect`.
@@ -71,7 +71,7 @@ class sim_tool : public ::testing::Test {
   }
 
   std::unique_ptr<test_network> net_;
-  std::unique_ptr<live::session> session_;
+  std::unique_ptr<live::client> session_;
   std::string fifo_path_;
   int fifo_ = -1;
   pid_t sim_ = -1;

@@ -17,7 +17,8 @@
 #include "cip/connection_manager.hpp"
 #include "cip/encap.hpp"
 #include "cip/message.hpp"
-#include "live/socket.hpp"
+#include "cip/stream_framer.hpp"
+#include "net/socket.hpp"
 #include "netns/live_support.hpp"
 #include "sim_network.hpp"
 #include "test_paths.hpp"
@@ -61,18 +62,18 @@ class raw_link {
  public:
   // `registered` false: the TCP connection only, for requests about RegisterSession itself.
   static std::optional<raw_link> open(const std::string& ip, bool registered, std::string& why) {
-    auto to = live::resolve(ip, cip::enip_port);
-    if (auto* e = live::failed(to)) {
-      why = e->message;
+    auto to = net::resolve(ip, cip::enip_port);
+    if (!to) {
+      why = to.error().message;
       return std::nullopt;
     }
-    auto s = live::tcp_connect(std::get<live::endpoint>(to), live::clock::now() + 3s);
-    if (auto* e = live::failed(s)) {
-      why = e->message;
+    auto s = net::tcp_connect(*to, net::clock::now() + 3s);
+    if (!s) {
+      why = s.error().message;
       return std::nullopt;
     }
     raw_link l;
-    l.sock_ = std::move(std::get<live::fd>(s));
+    l.sock_ = std::move(*s);
     if (!registered) return l;
     const auto reg = l.exchange(cip::command::register_session, 0, cip::register_session_data());
     if (!reg.replied || reg.encap != 0 || l.last_session_ == 0) {
@@ -83,19 +84,32 @@ class raw_link {
     return l;
   }
 
+  // The next whole message, read no further than it, or nothing by the deadline.
+  std::optional<cip::bytes> receive(net::clock::time_point deadline) const {
+    cip::stream_framer f;
+    for (;;) {
+      auto m = f.next();
+      if (!m) return std::nullopt;
+      if (m->has_value()) return std::move(**m);
+      std::uint8_t buf[4096];
+      const auto got = net::recv_some(sock_.get(), buf, std::min(sizeof buf, f.wanted() - f.pending()), deadline);
+      if (!got || got->size == 0) return std::nullopt;
+      f.feed(cip::byte_view(buf, got->size));
+    }
+  }
+
   // One encapsulation message and its reply, read within 3 s.
   answer exchange(cip::command cmd, std::uint32_t session, cip::byte_view data) {
     return exchange_bytes(cip::encode_encap(cmd, session, context_, data));
   }
   answer exchange_bytes(cip::byte_view msg) {
-    const auto deadline = live::clock::now() + 3s;
-    if (live::send_all(sock_.get(), msg, deadline)) return no_reply();
-    std::uint8_t head[cip::encap_header_size];
-    if (live::recv_exact(sock_.get(), head, sizeof head, deadline, "reply header")) return no_reply();
-    const auto h = cip::decode_encap_header(head);
+    const auto deadline = net::clock::now() + 3s;
+    if (!net::send_all(sock_.get(), msg, deadline)) return no_reply();
+    const auto reply = receive(deadline);
+    if (!reply) return no_reply();
+    const auto h = cip::decode_encap_header(*reply);
     if (!h) return no_reply();
-    cip::bytes body(h->length);
-    if (h->length > 0 && live::recv_exact(sock_.get(), body.data(), body.size(), deadline, "reply")) return no_reply();
+    const auto body = cip::byte_view(*reply).subspan(cip::encap_header_size);
     last_session_ = h->session;
     answer a = encap_answer(h->status);
     if (h->command != static_cast<std::uint16_t>(cip::command::send_rr_data) || h->status != 0) return a;
@@ -114,7 +128,7 @@ class raw_link {
 
  private:
   raw_link() = default;
-  live::fd sock_;
+  net::fd sock_;
   cip::sender_context context_{'s', 'i', 'd', 'e', 'b', 'y', 's', 'd'};
   std::uint32_t last_session_ = 0;
 };

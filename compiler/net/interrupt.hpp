@@ -4,7 +4,7 @@
 // so it still closes every connection it opened (a device would otherwise
 // keep its outputs owned until the connection times out), reports what it
 // found, and then ends.
-namespace edsc::live {
+namespace edsc::net {
 
 // Installs the handler for SIGINT and SIGTERM (without SA_RESTART: a wait
 // wakes up), unless the signal was ignored when edsc started.
@@ -12,4 +12,4 @@ void catch_interrupts();
 // The signal caught since, or 0.
 [[nodiscard]] int interruption();
 
-}  // namespace edsc::live
+}  // namespace edsc::net

@@ -1,9 +1,9 @@
-#include "live/interrupt.hpp"
+#include "net/interrupt.hpp"
 
 #include <csignal>
 #include <initializer_list>
 
-namespace edsc::live {
+namespace edsc::net {
 
 namespace {
 
@@ -30,4 +30,4 @@ void catch_interrupts() {
 
 int interruption() { return caught; }
 
-}  // namespace edsc::live
+}  // namespace edsc::net

@@ -1,4 +1,4 @@
-#include "live/socket.hpp"
+#include "net/socket.hpp"
 
 #include <arpa/inet.h>
 #include <fcntl.h>
@@ -14,9 +14,9 @@
 
 #include <fmt/format.h>
 
-#include "live/interrupt.hpp"
+#include "net/interrupt.hpp"
 
-namespace edsc::live {
+namespace edsc::net {
 
 fd& fd::operator=(fd&& o) noexcept {
   if (this != &o) {
@@ -71,7 +71,7 @@ result<endpoint> resolve(const std::string& host_port, std::uint16_t port) {
     const auto p = host_port.substr(colon + 1);
     char* end = nullptr;
     const auto n = std::strtoul(p.c_str(), &end, 10);
-    if (p.empty() || *end != '\0' || n == 0 || n > 65535) return net_error{fmt::format("bad port in {}", host_port)};
+    if (p.empty() || *end != '\0' || n == 0 || n > 65535) return fail(error{error_id::address, fmt::format("bad port in {}", host_port)});
     port = static_cast<std::uint16_t>(n);
     host = host_port.substr(0, colon);
   }
@@ -83,7 +83,7 @@ result<endpoint> resolve(const std::string& host_port, std::uint16_t port) {
   hints.ai_socktype = SOCK_STREAM;
   addrinfo* found = nullptr;
   if (const int rc = ::getaddrinfo(host.c_str(), nullptr, &hints, &found); rc != 0 || !found)
-    return net_error{fmt::format("cannot resolve {}: {}", host, rc ? ::gai_strerror(rc) : "no IPv4 address")};
+    return fail(error{error_id::address, fmt::format("cannot resolve {}: {}", host, rc ? ::gai_strerror(rc) : "no IPv4 address")});
   e.addr.sin_addr = reinterpret_cast<const sockaddr_in*>(found->ai_addr)->sin_addr;
   ::freeaddrinfo(found);
   return e;
@@ -91,19 +91,19 @@ result<endpoint> resolve(const std::string& host_port, std::uint16_t port) {
 
 result<fd> tcp_connect(const endpoint& to, clock::time_point deadline) {
   fd s(::socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0));
-  if (!s.valid()) return net_error{fmt::format("cannot create a TCP socket: {}", errno_text(errno))};
+  if (!s.valid()) return fail(error{error_id::socket, fmt::format("cannot create a TCP socket: {}", errno_text(errno))});
   if (::connect(s.get(), reinterpret_cast<const sockaddr*>(&to.addr), sizeof to.addr) != 0 && errno != EINPROGRESS)
-    return net_error{fmt::format("cannot connect to {}: {}", to_string(to.addr), errno_text(errno))};
+    return fail(error{error_id::connect, fmt::format("cannot connect to {}: {}", to_string(to.addr), errno_text(errno))});
   if (!wait_for(s.get(), POLLOUT, deadline))
-    return net_error{fmt::format("no TCP connection to {} within the timeout", to_string(to.addr))};
+    return fail(error{error_id::timeout, fmt::format("no TCP connection to {} within the timeout", to_string(to.addr))});
   int err = 0;
   socklen_t len = sizeof err;
   ::getsockopt(s.get(), SOL_SOCKET, SO_ERROR, &err, &len);
-  if (err != 0) return net_error{fmt::format("cannot connect to {}: {}", to_string(to.addr), errno_text(err))};
+  if (err != 0) return fail(error{error_id::connect, fmt::format("cannot connect to {}: {}", to_string(to.addr), errno_text(err))});
   return s;
 }
 
-std::optional<net_error> send_all(int s, cip::byte_view b, clock::time_point deadline) {
+result<void> send_all(int s, cip::byte_view b, clock::time_point deadline) {
   std::size_t done = 0;
   while (done < b.size()) {
     const auto n = ::send(s, b.data() + done, b.size() - done, MSG_NOSIGNAL);
@@ -112,49 +112,36 @@ std::optional<net_error> send_all(int s, cip::byte_view b, clock::time_point dea
       continue;
     }
     if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR)) {
-      if (!wait_for(s, POLLOUT, deadline)) return net_error{"the device does not take our request within the timeout"};
+      if (!wait_for(s, POLLOUT, deadline)) return error{error_id::timeout, "the device does not take our request within the timeout"};
       continue;
     }
-    return net_error{fmt::format("sending to the device failed: {}", errno_text(errno))};
+    return error{error_id::closed, fmt::format("sending to the device failed: {}", errno_text(errno))};
   }
-  return std::nullopt;
+  return {};
 }
 
-std::optional<net_error> recv_exact(int s, std::uint8_t* out, std::size_t n, clock::time_point deadline,
-                                    const char* what) {
-  std::size_t done = 0;
-  while (done < n) {
-    const auto got = ::recv(s, out + done, n - done, 0);
-    if (got > 0) {
-      done += static_cast<std::size_t>(got);
-      continue;
-    }
-    if (got == 0)
-      return net_error{done == 0 ? fmt::format("the device closed the connection instead of sending {}", what)
-                                 : fmt::format("the device closed the connection after {} of the {} bytes of {}",
-                                               done, n, what)};
-    if (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR) {
-      if (!wait_for(s, POLLIN, deadline))
-        return net_error{done == 0 ? fmt::format("no {} from the device within the timeout", what)
-                                   : fmt::format("the device sent {} of the {} bytes of {} and then nothing "
-                                                 "within the timeout", done, n, what)};
-      continue;
-    }
-    return net_error{fmt::format("receiving {} failed after {} of the {} bytes: {}", what, done, n, errno_text(errno))};
+std::optional<received> recv_some(int s, std::uint8_t* out, std::size_t len, clock::time_point deadline) {
+  for (;;) {
+    const auto got = ::recv(s, out, len, 0);
+    if (got > 0) return received{static_cast<std::size_t>(got), false, {}};
+    if (got == 0) return received{0, true, {}};
+    if (errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR) return received{0, false, errno_text(errno)};
+    if (!wait_for(s, POLLIN, deadline)) return std::nullopt;
   }
-  return std::nullopt;
 }
 
 result<fd> udp_socket(const sockaddr_in& local) {
   fd s(::socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0));
-  if (!s.valid()) return net_error{fmt::format("cannot create a UDP socket: {}", errno_text(errno))};
+  if (!s.valid()) return fail(error{error_id::socket, fmt::format("cannot create a UDP socket: {}", errno_text(errno))});
   // No SO_REUSEADDR: with it, Linux lets a second program bind the same
   // address and port, and the datagrams meant for one go to the other.
   if (::bind(s.get(), reinterpret_cast<const sockaddr*>(&local), sizeof local) != 0) {
-    if (errno != EADDRINUSE) return net_error{fmt::format("cannot bind UDP {}: {}", to_string(local), errno_text(errno))};
+    if (errno != EADDRINUSE)
+      return fail(error{error_id::socket, fmt::format("cannot bind UDP {}: {}", to_string(local), errno_text(errno))});
     char addr[INET_ADDRSTRLEN] = {};
     ::inet_ntop(AF_INET, &local.sin_addr, addr, sizeof addr);
-    return net_error{fmt::format("UDP port {} on {} is already in use by another program", ntohs(local.sin_port), addr)};
+    return fail(error{error_id::socket,
+                      fmt::format("UDP port {} on {} is already in use by another program", ntohs(local.sin_port), addr)});
   }
   return s;
 }
@@ -170,4 +157,4 @@ bool wait_readable(int s, clock::time_point deadline, bool interruptible) {
   }
 }
 
-}  // namespace edsc::live
+}  // namespace edsc::net
