@@ -6,8 +6,9 @@
 #include <span>
 #include <string>
 #include <utility>
-#include <variant>
 #include <vector>
+
+#include "base/result.hpp"
 
 namespace edsc::cip {
 
@@ -23,20 +24,7 @@ struct decode_error {
 
 // A decoded value or the reason it could not be decoded.
 template <class T>
-class decoded {
- public:
-  decoded(T v) : v_(std::move(v)) {}              // NOLINT: implicit by design
-  decoded(decode_error e) : v_(std::move(e)) {}   // NOLINT
-  [[nodiscard]] bool ok() const { return v_.index() == 0; }
-  explicit operator bool() const { return ok(); }
-  [[nodiscard]] const T& value() const { return std::get<0>(v_); }
-  [[nodiscard]] T& value() { return std::get<0>(v_); }
-  [[nodiscard]] const T* operator->() const { return &value(); }
-  [[nodiscard]] const decode_error& error() const { return std::get<1>(v_); }
-
- private:
-  std::variant<T, decode_error> v_;
-};
+using decoded = edsc::result<T, decode_error>;
 
 inline void put_u8(bytes& b, std::uint8_t v) { b.push_back(v); }
 inline void put_u16(bytes& b, std::uint16_t v) {
