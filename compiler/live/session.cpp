@@ -58,7 +58,7 @@ void session::close() {
   if (handle_ != 0) {
     // No reply comes to UnRegisterSession: the device closes the connection.
     const auto msg = cip::encode_encap(cip::command::unregister_session, handle_, make_context(++context_counter_), {});
-    (void)send_all(sock_.get(), msg, clock::now() + std::chrono::milliseconds(200));
+    (void)send_all(sock_.get(), msg.value(), clock::now() + std::chrono::milliseconds(200));
   }
   sock_ = fd();
   handle_ = 0;
@@ -69,7 +69,8 @@ result<cip::bytes> session::exchange(cip::command cmd, cip::byte_view data, bool
   const auto deadline = clock::now() + timeout_;
   const auto context = make_context(++context_counter_);
   const auto msg = cip::encode_encap(cmd, handle_, context, data);
-  if (auto e = send_all(sock_.get(), msg, deadline)) return *e;
+  if (!msg) return net_error{msg.error().what()};
+  if (auto e = send_all(sock_.get(), *msg, deadline)) return *e;
   std::uint8_t head[cip::encap_header_size];
   const auto what = fmt::format("{} reply header", command_name(static_cast<std::uint16_t>(cmd)));
   if (auto e = recv_exact(sock_.get(), head, sizeof head, deadline, what.c_str())) return *e;
@@ -120,12 +121,16 @@ result<std::vector<cip::service_info>> session::list_services() {
 }
 
 result<cip::reply> session::request(cip::service service, cip::byte_view path, cip::byte_view data) {
-  return request_raw(service, cip::encode_request(service, path, data));
+  const auto req = cip::encode_request(service, path, data);
+  if (!req) return net_error{req.error().what()};
+  return request_raw(service, *req);
 }
 
 result<cip::reply> session::request_raw(cip::service service, cip::byte_view cip_request) {
   const auto timeout_s = static_cast<std::uint16_t>(std::max<long long>(1, timeout_.count() / 1000));
-  auto reply = exchange(cip::command::send_rr_data, cip::send_rr_data(cip_request, timeout_s));
+  const auto rr = cip::send_rr_data(cip_request, timeout_s);
+  if (!rr) return net_error{rr.error().what()};
+  auto reply = exchange(cip::command::send_rr_data, *rr);
   if (auto* e = failed(reply)) return *e;
   const auto& body = std::get<cip::bytes>(reply);
   auto item = cip::decode_send_rr_data(body, cip::encap_header_size);
@@ -159,7 +164,7 @@ result<std::vector<cip::identity>> list_identity_udp(const endpoint& to, std::ch
   // The first two context bytes are the longest reply delay (ms) a device
   // may choose for a ListIdentity by UDP; 500 is the least OpENer honours.
   context[0] = 0xF4, context[1] = 0x01;
-  const auto msg = cip::encode_encap(cip::command::list_identity, 0, context, {});
+  const auto msg = cip::encode_encap(cip::command::list_identity, 0, context, {}).value();  // no data: fits
   if (::sendto(s, msg.data(), msg.size(), 0, reinterpret_cast<const sockaddr*>(&to.addr), sizeof to.addr) < 0) {
     if (errno == EACCES)
       return net_error{fmt::format("{} is a broadcast address: edsc probes one device, by its own address",

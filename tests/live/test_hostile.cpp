@@ -95,7 +95,7 @@ const hostile_case cases[] = {
      registered([](int s, const cip::bytes& req, const std::atomic<bool>&) {
        // A well-formed SendRRData reply holding a Get_Attribute_Single reply (0x8E).
        const cip::bytes cip_reply = {0x8E, 0, 0, 0, 1, 0};
-       send_bytes(s, reply_to(req, 0x006F, 0x1234, cip::send_rr_data(cip_reply, 0)));
+       send_bytes(s, reply_to(req, 0x006F, 0x1234, cip::send_rr_data(cip_reply, 0).value()));
      }),
      "replied to service 0x0E when asked for service"},
     {"silence",
