@@ -34,41 +34,38 @@ encap_outcome reply_with(state& s, const cip::encap_header& h, std::uint32_t ses
 
 // The CIP reply `answer` wrapped by `wrap` (SendRRData or SendUnitData data)
 // in a reply to `h`. A reply too large for its item or for the encapsulation
-// becomes the CIP status "reply data too large", as a device answers what
-// it cannot send whole.
+// is not sent cut: the event names the field and the TCP connection closes.
 template <class Wrap>
-cip::bytes cip_reply(state& s, const cip::encap_header& h, const cip::bytes& answer, Wrap wrap) {
-  auto whole = [&](cip::byte_view a) -> cip::encoded {
-    auto data = wrap(a);
+encap_outcome cip_reply(state& s, const cip::encap_header& h, const cip::bytes& answer, Wrap wrap) {
+  auto whole = [&]() -> cip::encoded {
+    auto data = wrap(answer);
     if (!data) return data;
     return cip::encode_encap_reply(command_of(h), h.session, status::success, h.context, *data);
-  };
-  auto r = whole(answer);
-  if (r) return std::move(r).value();
-  log_too_large(s, "CIP reply", r.error());
-  const auto service = static_cast<cip::service>(answer.empty() ? 0 : answer[0] & 0x7F);
-  return whole(cip::encode_reply(service, cip::general_status::reply_data_too_large)).value();  // 4 bytes: fits
+  }();
+  if (whole) return {std::move(whole).value()};
+  log_too_large(s, "CIP reply", whole.error());
+  return {std::nullopt, true};
 }
 
-std::optional<cip::bytes> unit_data(state& s, const link& l, const cip::encap_header& h, cip::byte_view data,
-                                    clock::time_point now) {
+encap_outcome unit_data(state& s, const link& l, const cip::encap_header& h, cip::byte_view data,
+                        clock::time_point now) {
   const auto u = cip::decode_send_unit_data(data, cip::encap_header_size);
-  if (!u) return error_reply(h, status::incorrect_data);
+  if (!u) return {error_reply(h, status::incorrect_data)};
   open_connection* c = nullptr;
   for (auto& o : s.connections)
     if (!o.point && o.ot_id == u->connection_id) c = &o;
-  if (c == nullptr) return std::nullopt;  // no such connection: a device drops the message
+  if (c == nullptr) return {};  // no such connection: a device drops the message
   c->expires = now + c->timeout;
   return cip_reply(s, h, handle_cip(s, l, u->cip, now),
                    [&](cip::byte_view a) { return cip::send_unit_data(c->to_id, u->sequence, a); });
 }
 
-std::optional<cip::bytes> rr_data(state& s, const link& l, const cip::encap_header& h, cip::byte_view data,
-                                  clock::time_point now) {
+encap_outcome rr_data(state& s, const link& l, const cip::encap_header& h, cip::byte_view data,
+                      clock::time_point now) {
   const auto items = cip::decode_command_items(data, cip::encap_header_size);
   const auto* u = items ? cip::find_item(items.value(), cip::item::unconnected_data) : nullptr;
   if (u == nullptr || cip::find_item(items.value(), cip::item::null_address) == nullptr)
-    return error_reply(h, status::incorrect_data);
+    return {error_reply(h, status::incorrect_data)};
   return cip_reply(s, h, handle_cip(s, l, u->data, now), [](cip::byte_view a) { return cip::send_rr_data(a, 0); });
 }
 
@@ -112,8 +109,8 @@ encap_outcome session_command(state& s, link& l, const cip::encap_header& h, cip
     case command::unregister_session:
       l.session = 0;
       return {std::nullopt, true};  // no reply: the originator closes, or we do
-    case command::send_rr_data: return {rr_data(s, l, h, data, now)};
-    default: return {unit_data(s, l, h, data, now)};
+    case command::send_rr_data: return rr_data(s, l, h, data, now);
+    default: return unit_data(s, l, h, data, now);
   }
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // Internal to the simulator: the `too-large` event, logged when a reply or a
 // frame does not fit the length field that would carry it and so is not
-// sent as it is (a CIP reply becomes "reply data too large", a class 1
+// sent cut (the TCP connection of a CIP reply is closed, a class 1
 // connection whose frames cannot be sent is closed).
 #include <fmt/format.h>
 

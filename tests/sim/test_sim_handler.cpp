@@ -318,14 +318,15 @@ TEST_F(sim_handler, class_attributes_of_identity_and_assembly) {
 }
 
 // A reply too large for the item and the encapsulation that carry it is not
-// sent cut: the request gets "reply data too large" (0x11), and the event
-// names the field.
-TEST_F(sim_handler, a_reply_too_large_to_send_is_status_0x11) {
+// sent cut: the TCP connection closes, and the event names the field.
+TEST_F(sim_handler, a_reply_too_large_to_send_closes_the_connection) {
+  auto r = handle_encap(s_, l_, cip::encode_encap(cip::command::register_session, 0, {}, cip::register_session_data()).value(), true, now_);
+  ASSERT_TRUE(r.reply);
   s_.dev.assembly(100)->data.assign(70000, 0x5A);
-  const auto rep = ask(cip::encode_request(cip::service::get_attribute_single, cip::logical_path(4, 100, 3)).value());
-  EXPECT_EQ(rep.service, 0x8E);
-  EXPECT_TRUE(rep.is(cip::general_status::reply_data_too_large));
-  EXPECT_TRUE(rep.data.empty());
+  const auto get = cip::encode_request(cip::service::get_attribute_single, cip::logical_path(4, 100, 3)).value();
+  const auto out = handle_encap(s_, l_, cip::encode_encap(cip::command::send_rr_data, l_.session, {}, cip::send_rr_data(get, 5).value()).value(), true, now_);
+  EXPECT_FALSE(out.reply);
+  EXPECT_TRUE(out.close);
   ASSERT_FALSE(s_.log.empty());
   EXPECT_NE(s_.log.back().find("\"event\":\"too-large\""), std::string::npos) << s_.log.back();
   EXPECT_NE(s_.log.back().find("\"field\":\"CPF item length\""), std::string::npos) << s_.log.back();
