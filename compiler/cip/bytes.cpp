@@ -13,4 +13,8 @@ bool reader::need(std::size_t n, const char* field) {
   return false;
 }
 
+std::string encode_error::what() const {
+  return fmt::format("{} of {} does not fit its field: at most {}", field, length, limit);
+}
+
 }  // namespace edsc::cip

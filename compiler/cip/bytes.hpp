@@ -6,8 +6,9 @@
 #include <span>
 #include <string>
 #include <utility>
-#include <variant>
 #include <vector>
+
+#include "base/result.hpp"
 
 namespace edsc::cip {
 
@@ -23,20 +24,26 @@ struct decode_error {
 
 // A decoded value or the reason it could not be decoded.
 template <class T>
-class decoded {
- public:
-  decoded(T v) : v_(std::move(v)) {}              // NOLINT: implicit by design
-  decoded(decode_error e) : v_(std::move(e)) {}   // NOLINT
-  [[nodiscard]] bool ok() const { return v_.index() == 0; }
-  explicit operator bool() const { return ok(); }
-  [[nodiscard]] const T& value() const { return std::get<0>(v_); }
-  [[nodiscard]] T& value() { return std::get<0>(v_); }
-  [[nodiscard]] const T* operator->() const { return &value(); }
-  [[nodiscard]] const decode_error& error() const { return std::get<1>(v_); }
+using decoded = edsc::result<T, decode_error>;
 
- private:
-  std::variant<T, decode_error> v_;
+// Why an encoder refused: the length or count it was handed does not fit the
+// field that carries it on the wire (a frame is never sent truncated).
+struct encode_error {
+  std::string field;       // "encapsulation length", "request path size"
+  std::size_t length = 0;  // what was asked, in the field's unit
+  std::size_t limit = 0;   // the most the field holds
+  [[nodiscard]] std::string what() const;
 };
+// An encoded message or why it cannot be sent.
+using encoded = edsc::result<bytes, encode_error>;
+
+// `length` when it is at most `limit` (the field's largest value), else the
+// error naming `field`.
+template <class Int>
+[[nodiscard]] edsc::result<Int, encode_error> fit(std::size_t length, std::size_t limit, const char* field) {
+  if (length > limit) return fail(encode_error{field, length, limit});
+  return static_cast<Int>(length);
+}
 
 inline void put_u8(bytes& b, std::uint8_t v) { b.push_back(v); }
 inline void put_u16(bytes& b, std::uint16_t v) {

@@ -2,8 +2,10 @@
 
 namespace edsc::cip {
 
-std::uint16_t encode_params16(const net_params& p) {
-  return static_cast<std::uint16_t>((p.size & 0x01FF) | (p.variable ? 1u << 9 : 0u) |
+edsc::result<std::uint16_t, encode_error> encode_params16(const net_params& p, const char* field) {
+  const auto size = fit<std::uint16_t>(p.size, 0x01FF, field);
+  if (!size) return size;
+  return static_cast<std::uint16_t>(*size | (p.variable ? 1u << 9 : 0u) |
                                     (static_cast<unsigned>(p.priority) << 10) |
                                     (static_cast<unsigned>(p.type) << 13) | (p.redundant_owner ? 1u << 15 : 0u));
 }
@@ -23,11 +25,13 @@ void put_key(bytes& path, const electronic_key& key) {
   put_u8(path, key.minor);
 }
 
-void put_data_segment(bytes& path, byte_view data) {
+edsc::result<void, encode_error> put_data_segment(bytes& path, byte_view data) {
+  const auto words = word_count(data, "data segment size");
+  if (!words) return fail(words.error());
   put_u8(path, 0x80);
-  put_u8(path, static_cast<std::uint8_t>((data.size() + 1) / 2));
-  put_bytes(path, data);
-  if (data.size() % 2) put_u8(path, 0);
+  put_u8(path, *words);
+  put_padded(path, data);
+  return {};
 }
 
 namespace {
@@ -40,9 +44,23 @@ void put_triple(bytes& d, std::uint16_t serial, std::uint16_t vendor, std::uint3
   put_u32(d, originator_serial);
 }
 
+// One direction's parameters in the form the request uses.
+edsc::result<void, encode_error> put_params(bytes& d, bool large, const net_params& p, const char* field) {
+  if (large) {
+    put_u32(d, encode_params32(p));
+    return {};
+  }
+  const auto v = encode_params16(p, field);
+  if (!v) return fail(v.error());
+  put_u16(d, *v);
+  return {};
+}
+
 }  // namespace
 
-bytes encode_forward_open(const forward_open_request& fo) {
+encoded encode_forward_open(const forward_open_request& fo) {
+  const auto words = word_count(fo.path, "connection path size");
+  if (!words) return fail(words.error());
   bytes d;
   put_u8(d, fo.priority_tick);
   put_u8(d, fo.timeout_ticks);
@@ -53,14 +71,14 @@ bytes encode_forward_open(const forward_open_request& fo) {
   put_u8(d, 0);
   put_u16(d, 0);  // 3 reserved bytes
   put_u32(d, fo.ot_rpi_us);
-  if (fo.large) put_u32(d, encode_params32(fo.ot)); else put_u16(d, encode_params16(fo.ot));
+  if (auto ot = put_params(d, fo.large, fo.ot, "O->T connection size"); !ot) return fail(ot.error());
   put_u32(d, fo.to_rpi_us);
-  if (fo.large) put_u32(d, encode_params32(fo.to)); else put_u16(d, encode_params16(fo.to));
+  if (auto to = put_params(d, fo.large, fo.to, "T->O connection size"); !to) return fail(to.error());
   put_u8(d, fo.transport);
-  put_u8(d, static_cast<std::uint8_t>((fo.path.size() + 1) / 2));
-  put_bytes(d, fo.path);
-  if (fo.path.size() % 2) put_u8(d, 0);
-  return encode_request(fo.large ? service::large_forward_open : service::forward_open, logical_path(class_id::connection_manager, 1), d);
+  put_u8(d, *words);
+  put_padded(d, fo.path);
+  return encode_request(fo.large ? service::large_forward_open : service::forward_open,
+                        logical_path(class_id::connection_manager, 1), d);
 }
 
 decoded<forward_open_reply> decode_forward_open_ok(byte_view data, std::size_t base) {
@@ -81,15 +99,16 @@ decoded<forward_open_reply> decode_forward_open_ok(byte_view data, std::size_t b
   return rep;
 }
 
-bytes encode_forward_close(const forward_close_request& fc) {
+encoded encode_forward_close(const forward_close_request& fc) {
+  const auto words = word_count(fc.path, "connection path size");
+  if (!words) return fail(words.error());
   bytes d;
   put_u8(d, fc.priority_tick);
   put_u8(d, fc.timeout_ticks);
   put_triple(d, fc.connection_serial, fc.originator_vendor, fc.originator_serial);
-  put_u8(d, static_cast<std::uint8_t>((fc.path.size() + 1) / 2));
+  put_u8(d, *words);
   put_u8(d, 0);  // reserved
-  put_bytes(d, fc.path);
-  if (fc.path.size() % 2) put_u8(d, 0);
+  put_padded(d, fc.path);
   return encode_request(service::forward_close, logical_path(class_id::connection_manager, 1), d);
 }
 

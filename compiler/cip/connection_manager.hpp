@@ -21,8 +21,10 @@ struct net_params {
   conn_type type = conn_type::point_to_point;
   bool redundant_owner = false;
 };
-// The 16-bit form holds sizes up to 511; the 32-bit form (Large_Forward_Open) up to 65535.
-[[nodiscard]] std::uint16_t encode_params16(const net_params& p);
+// The 16-bit form holds sizes up to 511 (9 bits; a larger size is refused,
+// naming `field`); the 32-bit form (Large_Forward_Open) up to 65535.
+[[nodiscard]] edsc::result<std::uint16_t, encode_error> encode_params16(const net_params& p,
+                                                                        const char* field = "connection size");
 [[nodiscard]] std::uint32_t encode_params32(const net_params& p);
 
 // Electronic key segment, format 4: 34 04 vendor type code major minor;
@@ -33,8 +35,9 @@ struct electronic_key {
   bool compatible = false;
 };
 void put_key(bytes& path, const electronic_key& key);
-// A simple data segment (0x80, size in words, data padded to words).
-void put_data_segment(bytes& path, byte_view data);
+// A simple data segment (0x80, size in words, data padded to words);
+// refused, and nothing appended, above 255 words.
+[[nodiscard]] edsc::result<void, encode_error> put_data_segment(bytes& path, byte_view data);
 
 struct forward_open_request {
   bool large = false;
@@ -49,8 +52,9 @@ struct forward_open_request {
   std::uint8_t transport = 0x01;  // client, cyclic, class 1
   bytes path;                     // key, application paths, data segment
 };
-// The whole CIP request to the Connection Manager (class 6 instance 1).
-[[nodiscard]] bytes encode_forward_open(const forward_open_request& fo);
+// The whole CIP request to the Connection Manager (class 6 instance 1);
+// refused when a size does not fit the form (`large`) or the path is over 255 words.
+[[nodiscard]] encoded encode_forward_open(const forward_open_request& fo);
 
 struct forward_open_reply {
   std::uint32_t ot_connection_id = 0, to_connection_id = 0;
@@ -68,7 +72,7 @@ struct forward_close_request {
   std::uint32_t originator_serial = 0;
   bytes path;
 };
-[[nodiscard]] bytes encode_forward_close(const forward_close_request& fc);
+[[nodiscard]] encoded encode_forward_close(const forward_close_request& fc);
 struct forward_close_reply {
   std::uint16_t connection_serial = 0, originator_vendor = 0;
   std::uint32_t originator_serial = 0;

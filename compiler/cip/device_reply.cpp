@@ -2,26 +2,11 @@
 
 #include <algorithm>
 
-
 namespace edsc::cip {
-
-bytes encode_encap_reply(command cmd, std::uint32_t session, encap_status status,
-                         const sender_context& context, byte_view data) {
-  bytes b;
-  b.reserve(encap_header_size + data.size());
-  put_u16(b, code(cmd));
-  put_u16(b, static_cast<std::uint16_t>(data.size()));
-  put_u32(b, session);
-  put_u32(b, code(status));
-  put_bytes(b, context);
-  put_u32(b, 0);
-  put_bytes(b, data);
-  return b;
-}
 
 bytes encap_reply_header_only(command cmd, std::uint32_t session, encap_status status,
                               const sender_context& context) {
-  return encode_encap_reply(cmd, session, status, context, {});
+  return encode_encap(cmd, session, context, {}, status).value();  // no data: always fits
 }
 
 void put_identity_fields(bytes& b, const identity& id) {
@@ -49,7 +34,7 @@ bytes list_identity_reply(const identity& id) {
   body.insert(body.end(), 8, 0);
   put_identity_fields(body, id);
   put_u8(body, id.state);
-  return encode_cpf({{item::list_identity, body}});
+  return encode_cpf({{item::list_identity, body}}).value();  // at most 67 bytes: the name is cut to 32
 }
 
 bytes list_services_reply() {
@@ -59,7 +44,7 @@ bytes list_services_reply() {
   put_u16(s, (1u << 5) | (1u << 8));
   const char name[16] = "Communications";
   for (const char c : name) put_u8(s, static_cast<std::uint8_t>(c));
-  return encode_cpf({{item::list_services, s}});
+  return encode_cpf({{item::list_services, s}}).value();  // 20 bytes
 }
 
 bytes encode_reply(service request_service, general_status general, std::span<const std::uint16_t> additional,
@@ -74,16 +59,19 @@ bytes encode_reply(service request_service, general_status general, std::span<co
   return b;
 }
 
-bytes forward_open_ok_data(const forward_open_reply& r) {
+encoded forward_open_ok_data(const forward_open_reply& r) {
+  const auto words = fit<std::uint8_t>((r.application.size() + 1) / 2, 0xFF, "application reply size");
+  if (!words) return fail(words.error());
   bytes d;
   put_u32(d, r.ot_connection_id);
   put_u32(d, r.to_connection_id);
   put_bytes(d, byte_view(connection_triple_data(r.connection_serial, r.originator_vendor, r.originator_serial)).first(8));
   put_u32(d, r.ot_api_us);
   put_u32(d, r.to_api_us);
-  put_u8(d, static_cast<std::uint8_t>(r.application.size() / 2));
+  put_u8(d, *words);
   put_u8(d, 0);
   put_bytes(d, r.application);
+  if (r.application.size() % 2) put_u8(d, 0);
   return d;
 }
 

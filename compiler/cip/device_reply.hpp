@@ -12,9 +12,11 @@
 
 namespace edsc::cip {
 
-// A reply header with `status` (requests always carry 0).
-[[nodiscard]] bytes encode_encap_reply(command cmd, std::uint32_t session, encap_status status,
-                                       const sender_context& context, byte_view data);
+// A reply header with `status` (requests always carry 0) and `data`.
+[[nodiscard]] inline encoded encode_encap_reply(command cmd, std::uint32_t session, encap_status status,
+                                                const sender_context& context, byte_view data) {
+  return encode_encap(cmd, session, context, data, status);
+}
 // An error reply: the header alone, with `status`.
 [[nodiscard]] bytes encap_reply_header_only(command cmd, std::uint32_t session, encap_status status,
                                             const sender_context& context);
@@ -30,7 +32,8 @@ void put_identity_fields(bytes& b, const identity& id);
 [[nodiscard]] bytes encode_reply(service request_service, general_status general,
                                  std::span<const std::uint16_t> additional = {}, byte_view data = {});
 
-[[nodiscard]] bytes forward_open_ok_data(const forward_open_reply& r);
+// Refused when the application reply is longer than its size byte says (255 words).
+[[nodiscard]] encoded forward_open_ok_data(const forward_open_reply& r);
 // The data of a refused Forward_Open or Forward_Close and of a Forward_Close
 // reply: connection serial, originator vendor and serial, then a size byte
 // (remaining path, application reply) of 0 and a reserved byte.

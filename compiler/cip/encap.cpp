@@ -24,13 +24,16 @@ void read_identity_fields(reader& r, identity& id) {
   id.product_name.assign(name.begin(), name.end());
 }
 
-bytes encode_encap(command cmd, std::uint32_t session, const sender_context& context, byte_view data) {
+encoded encode_encap(command cmd, std::uint32_t session, const sender_context& context, byte_view data,
+                     encap_status status) {
+  const auto length = fit<std::uint16_t>(data.size(), 0xFFFF, "encapsulation length");
+  if (!length) return fail(length.error());
   bytes b;
   b.reserve(encap_header_size + data.size());
-  put_u16(b, static_cast<std::uint16_t>(cmd));
-  put_u16(b, static_cast<std::uint16_t>(data.size()));
+  put_u16(b, code(cmd));
+  put_u16(b, *length);
   put_u32(b, session);
-  put_u32(b, 0);  // status: 0 in requests
+  put_u32(b, code(status));
   put_bytes(b, context);
   put_u32(b, 0);  // options: 0
   put_bytes(b, data);
@@ -51,12 +54,14 @@ decoded<encap_header> decode_encap_header(byte_view b) {
   return h;
 }
 
-bytes encode_cpf(std::initializer_list<cpf_item_out> items) {
+encoded encode_cpf(std::initializer_list<cpf_item_out> items) {
   bytes b;
-  put_u16(b, static_cast<std::uint16_t>(items.size()));
+  put_u16(b, static_cast<std::uint16_t>(items.size()));  // a list written out in the source: a handful
   for (const auto& it : items) {
-    put_u16(b, static_cast<std::uint16_t>(it.type));
-    put_u16(b, static_cast<std::uint16_t>(it.data.size()));
+    const auto length = fit<std::uint16_t>(it.data.size(), 0xFFFF, "CPF item length");
+    if (!length) return fail(length.error());
+    put_u16(b, code(it.type));
+    put_u16(b, *length);
     put_bytes(b, it.data);
   }
   return b;
@@ -96,12 +101,24 @@ decoded<register_session> decode_register_session(byte_view data, std::size_t ba
   return reg;
 }
 
-bytes send_rr_data(byte_view cip_request, std::uint16_t timeout_s) {
+namespace {
+
+// SendRRData and SendUnitData data: interface handle 0 (CIP), the timeout,
+// then the CPF items.
+encoded command_data(std::uint16_t timeout_s, std::initializer_list<cpf_item_out> items) {
+  auto cpf = encode_cpf(items);
+  if (!cpf) return cpf;
   bytes b;
-  put_u32(b, 0);  // interface handle: CIP
+  put_u32(b, 0);
   put_u16(b, timeout_s);
-  put_bytes(b, encode_cpf({{item::null_address, {}}, {item::unconnected_data, cip_request}}));
+  put_bytes(b, *cpf);
   return b;
+}
+
+}  // namespace
+
+encoded send_rr_data(byte_view cip_request, std::uint16_t timeout_s) {
+  return command_data(timeout_s, {{item::null_address, {}}, {item::unconnected_data, cip_request}});
 }
 
 const cpf_item* find_item(const std::vector<cpf_item>& items, item type) {
@@ -127,16 +144,13 @@ decoded<byte_view> decode_send_rr_data(byte_view data, std::size_t base) {
   return d->data;
 }
 
-bytes send_unit_data(std::uint32_t connection_id, std::uint16_t sequence, byte_view cip) {
+encoded send_unit_data(std::uint32_t connection_id, std::uint16_t sequence, byte_view cip) {
   bytes addr, payload;
   put_u32(addr, connection_id);
   put_u16(payload, sequence);
   put_bytes(payload, cip);
-  bytes b;
-  put_u32(b, 0);
-  put_u16(b, 0);  // timeout: 0 for connected messages
-  put_bytes(b, encode_cpf({{item::connected_address, addr}, {item::connected_data, payload}}));
-  return b;
+  // Timeout 0 for connected messages.
+  return command_data(0, {{item::connected_address, addr}, {item::connected_data, payload}});
 }
 
 decoded<unit_data> decode_send_unit_data(byte_view data, std::size_t base) {

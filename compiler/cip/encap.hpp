@@ -28,8 +28,10 @@ struct encap_header {
   std::uint32_t options = 0;
 };
 
-// The header (its length set from `data`) followed by `data`.
-[[nodiscard]] bytes encode_encap(command cmd, std::uint32_t session, const sender_context& context, byte_view data);
+// The header (its length set from `data`; `status` 0 in requests) followed by
+// `data`; refused when `data` is longer than the 16-bit length says.
+[[nodiscard]] encoded encode_encap(command cmd, std::uint32_t session, const sender_context& context, byte_view data,
+                                   encap_status status = encap_status::success);
 // The first 24 bytes of `b`, which must hold at least that many.
 [[nodiscard]] decoded<encap_header> decode_encap_header(byte_view b);
 
@@ -43,7 +45,8 @@ struct cpf_item_out {
   item type;
   byte_view data;
 };
-[[nodiscard]] bytes encode_cpf(std::initializer_list<cpf_item_out> items);
+// Refused when an item's data is longer than its 16-bit length says.
+[[nodiscard]] encoded encode_cpf(std::initializer_list<cpf_item_out> items);
 // Every item of a CPF list; the lengths must fill `b` exactly.
 [[nodiscard]] decoded<std::vector<cpf_item>> decode_cpf(byte_view b, std::size_t base);
 
@@ -64,12 +67,12 @@ struct register_session {
 
 // SendRRData data (interface handle 0, timeout, null address item,
 // unconnected data item) around a CIP request.
-[[nodiscard]] bytes send_rr_data(byte_view cip_request, std::uint16_t timeout_s);
+[[nodiscard]] encoded send_rr_data(byte_view cip_request, std::uint16_t timeout_s);
 // The unconnected data item of a SendRRData reply's data.
 [[nodiscard]] decoded<byte_view> decode_send_rr_data(byte_view data, std::size_t base);
 // SendUnitData data (class 3): connected address item, connected data item
 // holding the 16-bit sequence count then the CIP message.
-[[nodiscard]] bytes send_unit_data(std::uint32_t connection_id, std::uint16_t sequence, byte_view cip);
+[[nodiscard]] encoded send_unit_data(std::uint32_t connection_id, std::uint16_t sequence, byte_view cip);
 struct unit_data {
   std::uint32_t connection_id = 0;
   std::uint16_t sequence = 0;

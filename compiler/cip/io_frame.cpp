@@ -6,14 +6,17 @@
 
 namespace edsc::cip {
 
-bytes encode_io_frame(const io_frame& f) {
+encoded encode_io_frame(const io_frame& f) {
   bytes addr, payload;
   put_u32(addr, f.connection_id);
   put_u32(addr, f.encap_sequence);
   put_u16(payload, f.sequence_count);
   if (f.run_idle) put_u32(payload, *f.run_idle);
   put_bytes(payload, f.data);
-  return encode_cpf({{item::sequenced_address, addr}, {item::connected_data, payload}});
+  auto frame = encode_cpf({{item::sequenced_address, addr}, {item::connected_data, payload}});
+  if (frame && frame->size() > max_io_frame_size)
+    return fail(encode_error{"class 1 frame size", frame->size(), max_io_frame_size});
+  return frame;
 }
 
 decoded<io_frame> decode_io_frame(byte_view b, bool run_idle) {

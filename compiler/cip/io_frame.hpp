@@ -23,7 +23,8 @@ struct io_frame {
 // (they travel as IP fragments) up to the largest UDP datagram.
 inline constexpr std::size_t max_io_frame_size = 65536;
 
-[[nodiscard]] bytes encode_io_frame(const io_frame& f);
+// Refused when the frame would be larger than max_io_frame_size.
+[[nodiscard]] encoded encode_io_frame(const io_frame& f);
 // `run_idle` says whether the connection's format carries the header.
 [[nodiscard]] decoded<io_frame> decode_io_frame(byte_view b, bool run_idle);
 

@@ -36,12 +36,22 @@ bytes logical_path(std::uint32_t class_id, std::uint32_t instance, std::optional
   return p;
 }
 
-bytes encode_request(service s, byte_view path, byte_view data) {
+edsc::result<std::uint8_t, encode_error> word_count(byte_view data, const char* field) {
+  return fit<std::uint8_t>((data.size() + 1) / 2, 0xFF, field);
+}
+
+void put_padded(bytes& b, byte_view data) {
+  put_bytes(b, data);
+  if (data.size() % 2) put_u8(b, 0);
+}
+
+encoded encode_request(service s, byte_view path, byte_view data) {
+  const auto words = word_count(path, "request path size");
+  if (!words) return fail(words.error());
   bytes b;
   put_u8(b, code(s));
-  put_u8(b, static_cast<std::uint8_t>((path.size() + 1) / 2));
-  put_bytes(b, path);
-  if (path.size() % 2) put_u8(b, 0);
+  put_u8(b, *words);
+  put_padded(b, path);
   put_bytes(b, data);
   return b;
 }

@@ -11,6 +11,12 @@
 
 namespace edsc::cip {
 
+// A word count of `data` padded to words, the way paths and data segments
+// give their size: refused above 255.
+[[nodiscard]] edsc::result<std::uint8_t, encode_error> word_count(byte_view data, const char* field);
+// `data` then a pad byte if its length is odd.
+void put_padded(bytes& b, byte_view data);
+
 // Logical segments, 8-bit when the value fits, else 16-bit with a pad byte.
 void put_class(bytes& path, std::uint32_t class_id);
 void put_instance(bytes& path, std::uint32_t instance);
@@ -22,11 +28,12 @@ void put_attribute(bytes& path, std::uint32_t attribute);
   return logical_path(code(c), instance, attribute);
 }
 
-// Service, path size in words, path (padded to words by the caller), data.
-[[nodiscard]] bytes encode_request(service s, byte_view path, byte_view data = {});
+// Service, path size in words, path (padded to a word here), data; refused
+// when the path is longer than its size byte says (255 words).
+[[nodiscard]] encoded encode_request(service s, byte_view path, byte_view data = {});
 // The same with any service byte, one codes.def lacks included (what a
 // hostile or unusual originator sends).
-[[nodiscard]] inline bytes encode_request(std::uint8_t s, byte_view path, byte_view data = {}) {
+[[nodiscard]] inline encoded encode_request(std::uint8_t s, byte_view path, byte_view data = {}) {
   return encode_request(service{s}, path, data);
 }
 

@@ -82,7 +82,9 @@ result<std::vector<cip::service_info>> client::list_services() {
 }
 
 result<cip::reply> client::request(cip::service service, cip::byte_view path, cip::byte_view data) {
-  return request_raw(service, cip::encode_request(service, path, data));
+  const auto req = cip::encode_request(service, path, data);
+  if (!req) return refused_to_encode("request", req.error());
+  return request_raw(service, *req);
 }
 
 result<cip::reply> client::request_raw(cip::service service, cip::byte_view cip_request) {
@@ -127,7 +129,8 @@ result<std::vector<cip::identity>> list_identity_udp(const net::endpoint& to, st
   // The first two context bytes are the longest reply delay (ms) a device
   // may choose for a ListIdentity by UDP; 500 is the least OpENer honours.
   x.context[0] = 0xF4, x.context[1] = 0x01;
-  const auto msg = cip::encode_encap(cip::command::list_identity, 0, x.context, {});
+  // No data: the encapsulation length cannot overflow.
+  const auto msg = cip::encode_encap(cip::command::list_identity, 0, x.context, {}).value();
   if (::sendto(s, msg.data(), msg.size(), 0, reinterpret_cast<const sockaddr*>(&to.addr), sizeof to.addr) < 0) {
     if (errno == EACCES)
       return error{net::error_id::address,

@@ -43,7 +43,7 @@ void measure(int sock, const connection_plan& plan, const cip::forward_open_repl
       if (plan.ot_run_idle && plan.facts.output_size > 0) f.run_idle = 0;  // idle: outputs stay safe
       f.data.assign(plan.facts.output_size, 0);
       const auto b = cip::encode_io_frame(f);
-      if (::sendto(sock, b.data(), b.size(), 0, reinterpret_cast<const sockaddr*>(&to), sizeof to) > 0) ++st.sent;
+      if (b && ::sendto(sock, b->data(), b->size(), 0, reinterpret_cast<const sockaddr*>(&to), sizeof to) > 0) ++st.sent;
       next_send += ot_period;
     }
     const auto wake = send_ot ? std::min(next_send, end) : end;
@@ -96,7 +96,12 @@ connection_outcome exercise_connection(client& s, const connection_plan& plan, s
   fo.ot_connection_id = 0;
   fo.to_connection_id = 0x45440000u + serial;  // ours for T->O point-to-point
   const auto service = fo.large ? cip::service::large_forward_open : cip::service::forward_open;
-  auto reply = s.request_raw(service, cip::encode_forward_open(fo));
+  const auto request = cip::encode_forward_open(fo);
+  if (!request) {
+    out.failure = refused_to_encode("Forward_Open", request.error());
+    return out;
+  }
+  auto reply = s.request_raw(service, *request);
   if (!reply) {
     out.failure = reply.error();
     return out;
@@ -124,7 +129,12 @@ connection_outcome exercise_connection(client& s, const connection_plan& plan, s
   fc.originator_vendor = originator_vendor;
   fc.originator_serial = originator_serial;
   fc.path = plan.app_path;
-  auto closed = s.request_raw(cip::service::forward_close, cip::encode_forward_close(fc));
+  const auto close_request = cip::encode_forward_close(fc);
+  if (!close_request) {
+    out.failure = refused_to_encode("Forward_Close", close_request.error());
+    return out;
+  }
+  auto closed = s.request_raw(cip::service::forward_close, *close_request);
   if (!closed) {
     out.failure = closed.error();
     out.failure->message = "Forward_Close: " + out.failure->message;

@@ -179,7 +179,9 @@ std::vector<connection_plan> plan_connections(const model::device& dev) {
     if (key) cip::put_key(fo.path, *key);
     cip::put_bytes(fo.path, p.app_path);
     if (f.config_size > 0 && f.config_instance != 0)
-      cip::put_data_segment(fo.path, config_data(dev, emit::assembly_of(dev, c.target_config_format), f.config_size));
+      if (auto seg = cip::put_data_segment(fo.path, config_data(dev, emit::assembly_of(dev, c.target_config_format), f.config_size));
+          !seg && p.not_openable.empty())
+        p.not_openable = "its configuration data does not fit a Forward_Open: " + seg.error().what();
     out.push_back(std::move(p));
   }
   return out;

@@ -95,27 +95,40 @@ bool session::move(input in) {
   return false;
 }
 
-void session::begin(input in, cip::command cmd, cip::byte_view data, clock::time_point now) {
+void session::begin(input in, cip::command cmd, cip::encoded data, clock::time_point now) {
+  // A request that cannot be encoded is refused before the state moves:
+  // nothing is sent and the session stays as it was.
+  const auto context = make_context(context_counter_ + 1);
+  auto msg = data ? cip::encode_encap(cmd, handle_, context, *data) : cip::encoded(data.error());
+  if (!msg) {
+    events_.emplace_back(refused_to_encode(command_name(cmd), msg.error()));
+    return;
+  }
   if (!move(in)) {
     events_.emplace_back(error{net::error_id::closed, state_ == st::awaiting || state_ == st::registering
                                                           ? "a request is already under way"
                                                           : "the session is closed"});
     return;
   }
-  expect_ = {cmd, make_context(++context_counter_), {}};
+  ++context_counter_;
+  expect_ = {cmd, context, {}};
   if (in == input::begin_request && carries_session(cmd)) expect_.session = handle_;
   deadline_ = now + timeout_;
-  transmit_.push_back(cip::encode_encap(cmd, handle_, expect_.context, data));
+  transmit_.push_back(std::move(*msg));
   drain();  // bytes that came before the request are read as its reply, as a socket would
 }
 
 void session::register_session(clock::time_point now) {
-  begin(input::begin_register, cip::command::register_session, cip::register_session_data(), now);
+  begin(input::begin_register, cip::command::register_session, cip::encoded(cip::register_session_data()), now);
 }
 
-void session::list_identity(clock::time_point now) { begin(input::begin_request, cip::command::list_identity, {}, now); }
+void session::list_identity(clock::time_point now) {
+  begin(input::begin_request, cip::command::list_identity, cip::encoded(cip::bytes{}), now);
+}
 
-void session::list_services(clock::time_point now) { begin(input::begin_request, cip::command::list_services, {}, now); }
+void session::list_services(clock::time_point now) {
+  begin(input::begin_request, cip::command::list_services, cip::encoded(cip::bytes{}), now);
+}
 
 void session::request(cip::service service, cip::byte_view cip_request, clock::time_point now) {
   service_ = cip::code(service);
@@ -127,8 +140,9 @@ void session::close() {
   const bool was_open = state_ != st::closed;
   if (!move(input::close)) return;
   if (was_open && handle_ != 0)
+    // No data: the encapsulation length cannot overflow.
     transmit_.push_back(
-        cip::encode_encap(cip::command::unregister_session, handle_, make_context(++context_counter_), {}));
+        cip::encode_encap(cip::command::unregister_session, handle_, make_context(++context_counter_), {}).value());
   handle_ = 0;
   events_.emplace_back(closed{});
 }

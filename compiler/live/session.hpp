@@ -97,7 +97,7 @@ class session {
  private:
   enum class input { begin_register, begin_request, reply, bad_reply, timeout, peer_closed, close };
   bool move(input in);
-  void begin(input in, cip::command cmd, cip::byte_view data, clock::time_point now);
+  void begin(input in, cip::command cmd, cip::encoded data, clock::time_point now);
   void drain();
   void answer(const cip::bytes& message);
   [[nodiscard]] result<event> decode(const cip::bytes& message);

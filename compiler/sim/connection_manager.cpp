@@ -149,7 +149,7 @@ bytes forward_open(state& s, const link& l, const cip::request& q, clock::time_p
             fmt::format("{},\"connection\":{},\"class\":{},\"ot_rpi_us\":{},\"to_rpi_us\":{}", triple(fo),
                         oc.point ? s.dev.points[*oc.point].number : 0, transport_class, fo.ot_rpi_us, fo.to_rpi_us));
   s.connections.push_back(oc);
-  return cip::encode_reply(q.service, general::success, {}, cip::forward_open_ok_data(rep));
+  return cip::encode_reply(q.service, general::success, {}, cip::forward_open_ok_data(rep).value());  // no application reply: fits
 }
 
 bytes forward_close(state& s, const cip::request& q) {

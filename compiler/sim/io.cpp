@@ -8,6 +8,7 @@
 
 #include "cip/io_frame.hpp"
 #include "sim/objects.hpp"
+#include "sim/too_large.hpp"
 
 namespace edsc::sim {
 
@@ -35,6 +36,18 @@ void expire(state& s, clock::time_point now) {
     }
   }
   if (removed) close_orphans(s);
+}
+
+// Closes the connections producing to `to_ids`, whose frames cannot be sent.
+void close_unsendable(state& s, const std::vector<std::uint32_t>& to_ids) {
+  std::erase_if(s.connections, [&](const open_connection& c) {
+    if (std::find(to_ids.begin(), to_ids.end(), c.to_id) == to_ids.end()) return false;
+    log_event(s, "close", fmt::format("\"serial\":{},\"originator_vendor\":{},\"originator_serial\":{},"
+                                      "\"why\":\"its frames do not fit a class 1 frame\"",
+                                      c.serial, c.vendor, c.originator_serial));
+    return true;
+  });
+  close_orphans(s);
 }
 
 }  // namespace
@@ -94,6 +107,7 @@ void consume_io(state& s, cip::byte_view frame, std::uint32_t from_ip, clock::ti
 std::vector<outgoing> produce_io(state& s, clock::time_point now) {
   expire(s, now);
   std::vector<outgoing> out;
+  std::vector<std::uint32_t> unsendable;  // T->O ids of frames too large to send
   bool ticked = false;
   for (auto& c : s.connections) {
     if (!c.point || !c.produces || c.next_produce > now) continue;
@@ -109,7 +123,13 @@ std::vector<outgoing> produce_io(state& s, clock::time_point now) {
     if (p.plan.to_run_idle && p.plan.facts.input_size > 0) f.run_idle = 1;  // the simulated device runs
     if (const auto* a = s.dev.assembly(p.plan.facts.input_instance)) f.data = a->data;
     f.data.resize(p.plan.facts.input_size, 0);
-    out.push_back({c.originator_ip, cip::encode_io_frame(f)});
+    auto frame = cip::encode_io_frame(f);
+    if (!frame) {
+      log_too_large(s, "class 1 frame", frame.error());
+      unsendable.push_back(c.to_id);
+      continue;
+    }
+    out.push_back({c.originator_ip, std::move(frame).value()});
     ++c.produced;
     const auto period = std::chrono::duration_cast<clock::duration>(std::chrono::microseconds(std::max(c.to_rpi_us, 100u)));
     c.next_produce += period;
@@ -118,6 +138,7 @@ std::vector<outgoing> produce_io(state& s, clock::time_point now) {
       c.next_produce = now + period;
     }
   }
+  if (!unsendable.empty()) close_unsendable(s, unsendable);
   return out;
 }
 

@@ -401,7 +401,7 @@ inline std::string sim_body(std::string_view input) {
   const auto now = sim::clock::time_point{} + std::chrono::hours(1);
   const cip::byte_view b(reinterpret_cast<const std::uint8_t*>(input.data()) + 1, input.size() - 1);
   // A registered session and an open owner connection first, so deeper paths are reached.
-  (void)sim::handle_encap(s, l, cip::encode_encap(cip::command::register_session, 0, {}, cip::register_session_data()), true, now);
+  (void)sim::handle_encap(s, l, cip::encode_encap(cip::command::register_session, 0, {}, cip::register_session_data()).value(), true, now);
   switch (static_cast<std::uint8_t>(input[0]) % 6) {
     case 0:
     case 1: {
@@ -499,7 +499,9 @@ inline std::string session_body(std::string_view input) {
       case 1: s.list_services(now); break;
       default:
         s.request(cip::service::get_attribute_single,
-                  cip::encode_request(cip::service::get_attribute_single, cip::logical_path(cip::class_id::identity, 1, 7)), now);
+                  cip::encode_request(cip::service::get_attribute_single, cip::logical_path(cip::class_id::identity, 1, 7))
+                      .value(),
+                  now);
     }
     if (auto broken = drain(); !broken.empty()) return broken;
   }

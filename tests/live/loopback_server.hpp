@@ -49,7 +49,7 @@ inline cip::bytes read_message(int s, const std::atomic<bool>& stop) {
 inline cip::bytes reply_to(const cip::bytes& req, std::uint16_t command, std::uint32_t session, const cip::bytes& data) {
   cip::sender_context ctx{};
   std::copy(req.begin() + 12, req.begin() + 20, ctx.begin());
-  return cip::encode_encap(static_cast<cip::command>(command), session, ctx, data);
+  return cip::encode_encap(static_cast<cip::command>(command), session, ctx, data).value();
 }
 
 inline void send_bytes(int s, const cip::bytes& b) { (void)::send(s, b.data(), b.size(), MSG_NOSIGNAL); }

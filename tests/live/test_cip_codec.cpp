@@ -26,7 +26,7 @@ TEST(cip_encap, register_session_request) {
   // 00 00 00 00  options
   // 01 00 00 00  protocol version 1, options 0
   const sender_context ctx{'e', 'd', 's', 'c', 1, 0, 0, 0};
-  const auto b = encode_encap(command::register_session, 0, ctx, register_session_data());
+  const auto b = encode_encap(command::register_session, 0, ctx, register_session_data()).value();
   EXPECT_EQ(hex(b), "65 00 04 00 00 00 00 00 00 00 00 00 65 64 73 63 01 00 00 00 00 00 00 00 01 00 00 00");
 }
 
@@ -111,10 +111,10 @@ TEST(cip_encap, send_rr_data_wraps_a_request) {
   // 00 00 00 00 interface handle, 03 00 timeout 3 s, 02 00 two items,
   // 00 00 00 00 null address, B2 00 06 00 unconnected data of 6 bytes:
   // 01 02 20 01 24 01 = Get_Attributes_All, path 2 words, class 1 instance 1
-  const auto req = encode_request(service::get_attributes_all, logical_path(0x01, 1));
+  const auto req = encode_request(service::get_attributes_all, logical_path(0x01, 1)).value();
   EXPECT_EQ(hex(req), "01 02 20 01 24 01");
-  EXPECT_EQ(hex(send_rr_data(req, 3)), "00 00 00 00 03 00 02 00 00 00 00 00 B2 00 06 00 01 02 20 01 24 01");
-  const auto wrapped = send_rr_data(req, 3);  // the decoded item views these bytes
+  EXPECT_EQ(hex(send_rr_data(req, 3).value()), "00 00 00 00 03 00 02 00 00 00 00 00 B2 00 06 00 01 02 20 01 24 01");
+  const auto wrapped = send_rr_data(req, 3).value();  // the decoded item views these bytes
   auto back = decode_send_rr_data(wrapped, 24);
   ASSERT_TRUE(back.ok());
   EXPECT_EQ(hex(back.value()), "01 02 20 01 24 01");
@@ -122,7 +122,7 @@ TEST(cip_encap, send_rr_data_wraps_a_request) {
 
 TEST(cip_encap, send_unit_data_round_trip) {
   // A1 00 04 00 + connection id; B1 00 len + sequence + message
-  const auto b = send_unit_data(0x11223344, 7, unhex("0E 03 20 01 24 01 30 07"));
+  const auto b = send_unit_data(0x11223344, 7, unhex("0E 03 20 01 24 01 30 07")).value();
   EXPECT_EQ(hex(b), "00 00 00 00 00 00 02 00 A1 00 04 00 44 33 22 11 B1 00 0A 00 07 00 0E 03 20 01 24 01 30 07");
   auto u = decode_send_unit_data(b, 0);
   ASSERT_TRUE(u.ok());
@@ -171,15 +171,15 @@ TEST(cip_message, identity_attributes_all) {
 TEST(cip_connection_manager, network_parameters) {
   // 38 bytes, fixed, low priority, point-to-point: 38 | 2 << 13 = 0x4026
   net_params p{38, false, conn_priority::low, conn_type::point_to_point, false};
-  EXPECT_EQ(encode_params16(p), 0x4026);
+  EXPECT_EQ(encode_params16(p).value(), 0x4026);
   // multicast, high: 34 | 1 << 10 | 1 << 13 = 0x2422
-  EXPECT_EQ(encode_params16({34, false, conn_priority::high, conn_type::multicast, false}), 0x2422);
+  EXPECT_EQ(encode_params16({34, false, conn_priority::high, conn_type::multicast, false}).value(), 0x2422);
   // 32-bit: size in bits 0-15, type in 29-30: 600 | 2 << 29 = 0x40000258
   EXPECT_EQ(encode_params32({600, false, conn_priority::low, conn_type::point_to_point, false}), 0x40000258u);
 }
 
 TEST(cip_connection_manager, forward_open_of_opener_connection1) {
-  const auto b = encode_forward_open(live_test::opener_connection1_request());
+  const auto b = encode_forward_open(live_test::opener_connection1_request()).value();
   EXPECT_EQ(hex(b),
             "54 02 20 06 24 01 "         // Forward_Open to class 6 instance 1
             "0A 0E "                     // priority/tick, timeout ticks
@@ -201,7 +201,7 @@ TEST(cip_connection_manager, forward_open_reply_and_close) {
   EXPECT_EQ(r->to_connection_id, 0x22222222u);
   EXPECT_EQ(r->to_api_us, 30000u);
   forward_close_request fc{0x0A, 0x0E, 0x4501, 0xFFFF, 0x63736465, unhex("20 04 24 97 2C 96 2C 64")};
-  EXPECT_EQ(hex(encode_forward_close(fc)),
+  EXPECT_EQ(hex(encode_forward_close(fc).value()),
             "4E 02 20 06 24 01 0A 0E 01 45 FF FF 65 64 73 63 04 00 20 04 24 97 2C 96 2C 64");
   EXPECT_FALSE(decode_forward_open_ok(unhex("11 11"), 0).ok());
 }
@@ -214,7 +214,7 @@ TEST(cip_io, class1_frame_round_trip) {
   f.run_idle = 1;
   f.data = {0x10, 0x20};
   // 02 00 | 02 80 08 00 DD CC BB AA 05 00 00 00 | B1 00 08 00 06 00 01 00 00 00 10 20
-  const auto b = encode_io_frame(f);
+  const auto b = encode_io_frame(f).value();
   EXPECT_EQ(hex(b), "02 00 02 80 08 00 DD CC BB AA 05 00 00 00 B1 00 08 00 06 00 01 00 00 00 10 20");
   auto back = decode_io_frame(b, true);
   ASSERT_TRUE(back.ok());
@@ -252,7 +252,7 @@ TEST(cip_connection_manager, params32_every_field_both_ways) {
 TEST(cip_connection_manager, data_segment_of_an_odd_length_is_padded_to_words) {
   // 0x80, 2 words for 3 bytes, the bytes, one pad byte
   bytes path;
-  put_data_segment(path, unhex("AA BB CC"));
+  EXPECT_TRUE(put_data_segment(path, unhex("AA BB CC")).ok());
   EXPECT_EQ(hex(path), "80 02 AA BB CC 00");
 }
 
@@ -288,10 +288,10 @@ TEST(cip_message, electronic_key_segment_decodes_and_only_format_4) {
 // Even lengths need no pad byte: 4 bytes are 2 words, none is 0 words.
 TEST(cip_connection_manager, data_segment_of_an_even_length_is_not_padded) {
   bytes four;
-  put_data_segment(four, unhex("AA BB CC DD"));
+  EXPECT_TRUE(put_data_segment(four, unhex("AA BB CC DD")).ok());
   EXPECT_EQ(hex(four), "80 02 AA BB CC DD");
   bytes none;
-  put_data_segment(none, {});
+  EXPECT_TRUE(put_data_segment(none, {}).ok());
   EXPECT_EQ(hex(none), "80 00");
 }
 
@@ -339,7 +339,7 @@ TEST(cip_io, class1_frame_needs_both_item_types) {
 // 2 << 13 = 0x26 + 0x200 + 0x4000 = 0x4226, both ways; with the redundant
 // owner bit (1 << 15) 0xC226.
 TEST(cip_connection_manager, params16_variable_size_and_owner_both_ways) {
-  EXPECT_EQ(encode_params16({38, true, conn_priority::low, conn_type::point_to_point, false}), 0x4226);
+  EXPECT_EQ(encode_params16({38, true, conn_priority::low, conn_type::point_to_point, false}).value(), 0x4226);
   const auto p = decode_params16(0x4226);
   EXPECT_EQ(p.size, 38);
   EXPECT_TRUE(p.variable);
@@ -347,7 +347,7 @@ TEST(cip_connection_manager, params16_variable_size_and_owner_both_ways) {
   EXPECT_EQ(p.type, conn_type::point_to_point);
   EXPECT_FALSE(p.redundant_owner);
   EXPECT_FALSE(decode_params16(0x4026).variable);
-  EXPECT_EQ(encode_params16({38, true, conn_priority::low, conn_type::point_to_point, true}), 0xC226);
+  EXPECT_EQ(encode_params16({38, true, conn_priority::low, conn_type::point_to_point, true}).value(), 0xC226);
   const auto owned = decode_params16(0xC226);
   EXPECT_TRUE(owned.redundant_owner);
   EXPECT_EQ(owned.size, 38);

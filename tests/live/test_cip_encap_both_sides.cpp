@@ -36,7 +36,7 @@ TEST(cip_encap_both_sides, connected_address_is_one_connection_id) {
 }
 
 TEST(cip_encap_both_sides, command_items_found_by_type) {
-  const auto b = send_rr_data(unhex("01 02 20 01 24 01"), 3);
+  const auto b = send_rr_data(unhex("01 02 20 01 24 01"), 3).value();
   const auto items = decode_command_items(b, 24);
   ASSERT_TRUE(items.ok());
   ASSERT_NE(find_item(items.value(), item::null_address), nullptr);

@@ -49,7 +49,7 @@ class frame_sender {
     std::uint32_t n = 0;
     while (on_) {
       cip::io_frame f{id_, ++n, static_cast<std::uint16_t>(n), std::nullopt, cip::bytes(16, 0xAB)};
-      const auto b = cip::encode_io_frame(f);
+      const auto b = cip::encode_io_frame(f).value();
       ::sendto(s, b.data(), b.size(), 0, reinterpret_cast<sockaddr*>(&to), sizeof to);
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
     }
@@ -139,7 +139,7 @@ void fake_device(int s, const std::atomic<bool>& stop, quirks q) {
     } else {
       answer = cip_reply(service, {}, 0x08);  // service not supported
     }
-    send_bytes(s, reply_to(req, 0x006F, 0x1234, cip::send_rr_data(answer, 0)));
+    send_bytes(s, reply_to(req, 0x006F, 0x1234, cip::send_rr_data(answer, 0).value()));
   }
 }
 
@@ -423,7 +423,7 @@ void probe_device(int s, const std::atomic<bool>& stop, probe_quirks q) {
     } else {
       answer = cip_reply(service, {}, 0x08);
     }
-    send_bytes(s, reply_to(req, 0x006F, 0x1234, cip::send_rr_data(answer, 0)));
+    send_bytes(s, reply_to(req, 0x006F, 0x1234, cip::send_rr_data(answer, 0).value()));
   }
 }
 

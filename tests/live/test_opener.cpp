@@ -211,7 +211,7 @@ TEST_F(live_opener, an_owned_device_is_busy_not_wrong) {
   fo.originator_vendor = 0x1234;   // not edsc's
   fo.originator_serial = 0x600D;
   fo.timeout_multiplier = 7;       // x512: 15 s at 30 ms
-  const auto reply = owner.request_raw(cip::service::forward_open, cip::encode_forward_open(fo));
+  const auto reply = owner.request_raw(cip::service::forward_open, cip::encode_forward_open(fo).value());
   ASSERT_TRUE(reply.ok());
   ASSERT_EQ(reply->general, 0);
 
@@ -232,7 +232,7 @@ TEST_F(live_opener, an_owned_device_is_busy_not_wrong) {
   fc.originator_vendor = fo.originator_vendor;
   fc.originator_serial = fo.originator_serial;
   fc.path = unhex("20 04 24 97 2C 96 2C 64");
-  (void)owner.request_raw(cip::service::forward_close, cip::encode_forward_close(fc));
+  (void)owner.request_raw(cip::service::forward_close, cip::encode_forward_close(fc).value());
 }
 
 // The Identity object's extended device status (bits 4-7 of attribute 5):

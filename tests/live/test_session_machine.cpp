@@ -25,7 +25,7 @@ constexpr auto timeout = 1000ms;
 cip::sender_context ctx(std::uint8_t n) { return {'e', 'd', 's', 'c', n, 0, 0, 0}; }
 
 cip::bytes reply(std::uint16_t command, std::uint32_t handle, const cip::sender_context& c, const cip::bytes& data) {
-  return cip::encode_encap(static_cast<cip::command>(command), handle, c, data);
+  return cip::encode_encap(static_cast<cip::command>(command), handle, c, data).value();
 }
 
 // A RegisterSession reply granting handle 0x1234 to request 1.
@@ -81,7 +81,8 @@ TEST(live_session, registers_by_the_bytes_it_is_given_in_any_split) {
 TEST(live_session, a_request_goes_out_in_send_rr_data_and_its_reply_comes_back) {
   auto s = registered_session();
   s.request(cip::service::get_attribute_single, cip::encode_request(cip::service::get_attribute_single,
-                                                                    cip::logical_path(cip::class_id::identity, 1, 7)),
+                                                                    cip::logical_path(cip::class_id::identity, 1, 7))
+                                                        .value(),
             t0);
   // SendRRData (0x006F), 24 data bytes, handle 0x1234, context "edsc" 2; interface 0, timeout 1 s,
   // two items: null address, unconnected data of 8 bytes (0x0E, path 20 01 24 01 30 07).
@@ -149,18 +150,30 @@ TEST(live_session, another_session_handle_is_refused) {
                             "ours is 0x00001234");
 }
 
+// A request its SendRRData item cannot hold (over 65 535 bytes) is refused
+// before anything is sent, and the session stays ready for the next one.
+TEST(live_session, a_request_too_large_to_encode_is_refused_and_nothing_is_sent) {
+  auto s = registered_session();
+  s.request(cip::service::set_attribute_single, cip::bytes(70000, 0), t0);
+  EXPECT_EQ(error_words(s).rfind("live-request-too-large: SendRRData: ", 0), 0u);
+  EXPECT_FALSE(s.poll_transmit());
+  EXPECT_EQ(s.current(), session::state::idle);
+  s.request(cip::service::get_attribute_single, unhex("0E 02 20 01 24 01"), t0);
+  EXPECT_TRUE(s.poll_transmit());
+}
+
 TEST(live_session, a_reply_to_another_service_is_refused) {
   auto s = registered_session();
   s.request(cip::service::get_attribute_single, unhex("0E 02 20 01 24 01"), t0);
   // A well-formed SendRRData reply holding a Get_Attributes_All reply (0x81).
-  s.handle_bytes(reply(0x006F, 0x1234, ctx(2), cip::send_rr_data(unhex("81 00 00 00"), 0)), t0);
+  s.handle_bytes(reply(0x006F, 0x1234, ctx(2), cip::send_rr_data(unhex("81 00 00 00"), 0).value()), t0);
   EXPECT_EQ(error_words(s), "live-unexpected-reply: the device replied to service 0x01 when asked for service 0x0E");
 }
 
 TEST(live_session, a_reply_to_another_request_is_refused) {
   auto s = registered_session();
   s.request(cip::service::get_attribute_single, unhex("0E 02 20 01 24 01"), t0);
-  s.handle_bytes(reply(0x006F, 0x1234, ctx(7), cip::send_rr_data(unhex("8E 00 00 00"), 0)), t0);
+  s.handle_bytes(reply(0x006F, 0x1234, ctx(7), cip::send_rr_data(unhex("8E 00 00 00"), 0).value()), t0);
   EXPECT_EQ(error_words(s), "live-unexpected-reply: the device's SendRRData reply does not echo our sender context: "
                             "a reply to another request");
 }

@@ -18,7 +18,7 @@ namespace {
 cip::reply ask(state& s, std::uint8_t service, std::uint32_t cls, std::uint32_t instance,
                std::optional<std::uint32_t> attr, cip::byte_view data = {}) {
   const link l{0x0100007F, 0};
-  const auto r = handle_cip(s, l, cip::encode_request(service, cip::logical_path(cls, instance, attr), data),
+  const auto r = handle_cip(s, l, cip::encode_request(service, cip::logical_path(cls, instance, attr), data).value(),
                             clock::time_point{});
   auto rep = cip::decode_reply(r, 0);
   EXPECT_TRUE(rep.ok());

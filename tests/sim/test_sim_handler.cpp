@@ -37,10 +37,10 @@ class sim_handler : public ::testing::Test {
   // A CIP request through SendRRData on a registered session; the CIP reply.
   cip::reply ask(cip::byte_view request) {
     if (l_.session == 0) {
-      auto r = handle_encap(s_, l_, cip::encode_encap(cip::command::register_session, 0, {}, cip::register_session_data()), true, now_);
+      auto r = handle_encap(s_, l_, cip::encode_encap(cip::command::register_session, 0, {}, cip::register_session_data()).value(), true, now_);
       EXPECT_TRUE(r.reply);
     }
-    const auto msg = cip::encode_encap(cip::command::send_rr_data, l_.session, {}, cip::send_rr_data(request, 5));
+    const auto msg = cip::encode_encap(cip::command::send_rr_data, l_.session, {}, cip::send_rr_data(request, 5).value()).value();
     auto out = handle_encap(s_, l_, msg, true, now_);
     EXPECT_TRUE(out.reply);
     auto h = cip::decode_encap_header(*out.reply);
@@ -51,7 +51,7 @@ class sim_handler : public ::testing::Test {
     EXPECT_TRUE(rep.ok());
     return rep.value();
   }
-  cip::reply forward_open(cip::forward_open_request fo) { return ask(cip::encode_forward_open(fo)); }
+  cip::reply forward_open(cip::forward_open_request fo) { return ask(cip::encode_forward_open(fo).value()); }
 
   std::unique_ptr<analysis> analysis_;
   state s_;
@@ -86,13 +86,13 @@ TEST_F(sim_handler, encapsulation_errors_are_the_protocols) {
   out = handle_encap(s_, l_, unhex("65 00 04 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 02 00 00 00"), true, now_);
   EXPECT_EQ(cip::decode_encap_header(*out.reply)->status, 0x0069u);
   // NOP is never answered; a datagram asking for a session gets nothing.
-  EXPECT_FALSE(handle_encap(s_, l_, cip::encode_encap(cip::command::nop, 0, {}, {}), true, now_).reply);
+  EXPECT_FALSE(handle_encap(s_, l_, cip::encode_encap(cip::command::nop, 0, {}, {}).value(), true, now_).reply);
   link udp;
-  EXPECT_FALSE(handle_encap(s_, udp, cip::encode_encap(cip::command::register_session, 0, {}, cip::register_session_data()), false, now_).reply);
+  EXPECT_FALSE(handle_encap(s_, udp, cip::encode_encap(cip::command::register_session, 0, {}, cip::register_session_data()).value(), false, now_).reply);
 }
 
 TEST_F(sim_handler, identity_from_device_section_with_the_given_serial) {
-  auto out = handle_encap(s_, l_, cip::encode_encap(cip::command::list_identity, 0, {}, {}), false, now_);
+  auto out = handle_encap(s_, l_, cip::encode_encap(cip::command::list_identity, 0, {}, {}).value(), false, now_);
   ASSERT_TRUE(out.reply);
   auto ids = cip::decode_list_identity(cip::byte_view(*out.reply).subspan(24), 24);
   ASSERT_TRUE(ids.ok()) << ids.error().what;
@@ -101,30 +101,30 @@ TEST_F(sim_handler, identity_from_device_section_with_the_given_serial) {
   EXPECT_EQ(ids->front().product_code, 65001);
   EXPECT_EQ(ids->front().serial, 123456789u);
   EXPECT_EQ(ids->front().product_name, "OpENer PC");
-  const auto all = ask(cip::encode_request(cip::service::get_attributes_all, cip::logical_path(1, 1)));
+  const auto all = ask(cip::encode_request(cip::service::get_attributes_all, cip::logical_path(1, 1)).value());
   ASSERT_EQ(all.general, 0);
   auto id = cip::decode_identity_all(all.data, 0);
   ASSERT_TRUE(id.ok());
   EXPECT_EQ(id->major, 2);
   EXPECT_EQ(id->minor, 3);
   // Attribute 6 by Get_Attribute_Single: 0x075BCD15 little-endian.
-  EXPECT_EQ(hex(ask(cip::encode_request(0x0E, cip::logical_path(1, 1, 6))).data), "15 CD 5B 07");
-  EXPECT_EQ(ask(cip::encode_request(0x10, cip::logical_path(1, 1, 6), unhex("01 00 00 00"))).general, 0x0E);
-  EXPECT_EQ(ask(cip::encode_request(0x0E, cip::logical_path(1, 2, 1))).general, 0x05);
-  EXPECT_EQ(ask(cip::encode_request(0x0E, cip::logical_path(0x99, 1, 1))).general, 0x05);
+  EXPECT_EQ(hex(ask(cip::encode_request(0x0E, cip::logical_path(1, 1, 6)).value()).data), "15 CD 5B 07");
+  EXPECT_EQ(ask(cip::encode_request(0x10, cip::logical_path(1, 1, 6), unhex("01 00 00 00")).value()).general, 0x0E);
+  EXPECT_EQ(ask(cip::encode_request(0x0E, cip::logical_path(1, 2, 1)).value()).general, 0x05);
+  EXPECT_EQ(ask(cip::encode_request(0x0E, cip::logical_path(0x99, 1, 1)).value()).general, 0x05);
 }
 
 TEST_F(sim_handler, assemblies_read_and_written_with_size_checks) {
-  EXPECT_EQ(hex(ask(cip::encode_request(0x0E, cip::logical_path(4, 150, 4))).data), "20 00");
-  EXPECT_EQ(ask(cip::encode_request(0x0E, cip::logical_path(4, 150, 3))).data.size(), 32u);
-  EXPECT_EQ(hex(ask(cip::encode_request(0x0E, cip::logical_path(4, 0, 2))).data), "99 00");  // max instance 153
-  EXPECT_EQ(ask(cip::encode_request(0x10, cip::logical_path(4, 150, 3), cip::bytes(31, 1))).general, 0x13);
-  EXPECT_EQ(ask(cip::encode_request(0x10, cip::logical_path(4, 150, 3), cip::bytes(33, 1))).general, 0x15);
-  EXPECT_EQ(ask(cip::encode_request(0x10, cip::logical_path(4, 150, 3), cip::bytes(32, 7))).general, 0x00);
-  EXPECT_EQ(ask(cip::encode_request(0x0E, cip::logical_path(4, 150, 3))).data, cip::bytes(32, 7));
-  EXPECT_EQ(ask(cip::encode_request(0x10, cip::logical_path(4, 100, 3), cip::bytes(32, 1))).general, 0x0E);
-  EXPECT_EQ(ask(cip::encode_request(0x10, cip::logical_path(4, 100, 4), unhex("20 00"))).general, 0x0E);
-  EXPECT_EQ(ask(cip::encode_request(0x0E, cip::logical_path(4, 101, 3))).general, 0x05);
+  EXPECT_EQ(hex(ask(cip::encode_request(0x0E, cip::logical_path(4, 150, 4)).value()).data), "20 00");
+  EXPECT_EQ(ask(cip::encode_request(0x0E, cip::logical_path(4, 150, 3)).value()).data.size(), 32u);
+  EXPECT_EQ(hex(ask(cip::encode_request(0x0E, cip::logical_path(4, 0, 2)).value()).data), "99 00");  // max instance 153
+  EXPECT_EQ(ask(cip::encode_request(0x10, cip::logical_path(4, 150, 3), cip::bytes(31, 1)).value()).general, 0x13);
+  EXPECT_EQ(ask(cip::encode_request(0x10, cip::logical_path(4, 150, 3), cip::bytes(33, 1)).value()).general, 0x15);
+  EXPECT_EQ(ask(cip::encode_request(0x10, cip::logical_path(4, 150, 3), cip::bytes(32, 7)).value()).general, 0x00);
+  EXPECT_EQ(ask(cip::encode_request(0x0E, cip::logical_path(4, 150, 3)).value()).data, cip::bytes(32, 7));
+  EXPECT_EQ(ask(cip::encode_request(0x10, cip::logical_path(4, 100, 3), cip::bytes(32, 1)).value()).general, 0x0E);
+  EXPECT_EQ(ask(cip::encode_request(0x10, cip::logical_path(4, 100, 4), unhex("20 00")).value()).general, 0x0E);
+  EXPECT_EQ(ask(cip::encode_request(0x0E, cip::logical_path(4, 101, 3)).value()).general, 0x05);
   ASSERT_FALSE(s_.log.empty());
   EXPECT_NE(s_.log.back().find("\"event\":\"output\""), std::string::npos) << s_.log.back();
 }
@@ -132,7 +132,7 @@ TEST_F(sim_handler, assemblies_read_and_written_with_size_checks) {
 TEST_F(sim_handler, assemblies_start_as_zeros) {
   // Nothing has been written to the output (150) or configuration (151)
   // assemblies yet: their data is all zero bytes, 32 and 10 of them.
-  EXPECT_EQ(ask(cip::encode_request(0x0E, cip::logical_path(4, 150, 3))).data, cip::bytes(32, 0));
+  EXPECT_EQ(ask(cip::encode_request(0x0E, cip::logical_path(4, 150, 3)).value()).data, cip::bytes(32, 0));
   EXPECT_EQ(s_.dev.assembly(151)->data, cip::bytes(10, 0));
 }
 
@@ -215,11 +215,11 @@ TEST_F(sim_handler, owner_input_only_and_listen_only_share_the_inputs) {
   fc.originator_vendor = 0xFFFF;
   fc.originator_serial = 0x63736465;
   fc.path = unhex("20 04 24 97 2C 96 2C 64");
-  EXPECT_EQ(ask(cip::encode_forward_close(fc)).general, 0);
+  EXPECT_EQ(ask(cip::encode_forward_close(fc).value()).general, 0);
   EXPECT_EQ(s_.connections.size(), 2u);
-  EXPECT_EQ(ask(cip::encode_forward_close(fc)).additional, std::vector<std::uint16_t>{0x0107});
+  EXPECT_EQ(ask(cip::encode_forward_close(fc).value()).additional, std::vector<std::uint16_t>{0x0107});
   fc.connection_serial = 4;
-  EXPECT_EQ(ask(cip::encode_forward_close(fc)).general, 0);
+  EXPECT_EQ(ask(cip::encode_forward_close(fc).value()).general, 0);
   EXPECT_TRUE(s_.connections.empty());
   EXPECT_NE(s_.log.back().find("its owner closed"), std::string::npos) << s_.log.back();
 }
@@ -234,13 +234,13 @@ TEST_F(sim_handler, outputs_are_consumed_checked_and_time_out) {
   f.run_idle = 1;
   f.data.assign(32, 0xAB);
   s_.log.clear();
-  consume_io(s_, cip::encode_io_frame(f), l_.peer_ip, now_ + 10ms);
+  consume_io(s_, cip::encode_io_frame(f).value(), l_.peer_ip, now_ + 10ms);
   ASSERT_EQ(s_.log.size(), 1u);
   EXPECT_NE(s_.log[0].find("\"run\":true"), std::string::npos) << s_.log[0];
   EXPECT_EQ(s_.dev.assembly(150)->data, cip::bytes(32, 0xAB));
   f.sequence_count = 2;
   f.data.assign(33, 0xCD);  // wrong size: logged once, not stored, no refresh
-  consume_io(s_, cip::encode_io_frame(f), l_.peer_ip, now_ + 20ms);
+  consume_io(s_, cip::encode_io_frame(f).value(), l_.peer_ip, now_ + 20ms);
   EXPECT_NE(s_.log.back().find("wrong-size"), std::string::npos);
   EXPECT_EQ(s_.dev.assembly(150)->data, cip::bytes(32, 0xAB));
   // Multiplier 2 (x16) at 30 ms: still open at 10 + 470 ms, gone at 10 + 490 ms.
@@ -259,8 +259,8 @@ TEST_F(sim_handler, class_3_connections_carry_explicit_requests) {
   const auto rep = forward_open(fo);
   ASSERT_EQ(rep.general, 0);
   const auto ids = cip::decode_forward_open_ok(rep.data, 0).value();
-  const auto req = cip::encode_request(0x0E, cip::logical_path(1, 1, 1));
-  const auto msg = cip::encode_encap(cip::command::send_unit_data, l_.session, {}, cip::send_unit_data(ids.ot_connection_id, 7, req));
+  const auto req = cip::encode_request(0x0E, cip::logical_path(1, 1, 1)).value();
+  const auto msg = cip::encode_encap(cip::command::send_unit_data, l_.session, {}, cip::send_unit_data(ids.ot_connection_id, 7, req).value()).value();
   auto out = handle_encap(s_, l_, msg, true, now_);
   ASSERT_TRUE(out.reply);
   auto u = cip::decode_send_unit_data(cip::byte_view(*out.reply).subspan(24), 24);
@@ -310,11 +310,42 @@ TEST_F(sim_handler, the_counter_pattern_moves_only_unfixed_inputs) {
 // largest instance served: in OpENer's EDS not Assem151 but 153 (0x99), the
 // listen-only heartbeat point that Connection3's path "... 2C 99 ..." names.
 TEST_F(sim_handler, class_attributes_of_identity_and_assembly) {
-  EXPECT_EQ(hex(ask(cip::encode_request(0x0E, cip::logical_path(1, 0, 1))).data), "01 00");
-  EXPECT_EQ(hex(ask(cip::encode_request(0x0E, cip::logical_path(1, 0, 2))).data), "01 00");
-  EXPECT_EQ(ask(cip::encode_request(0x0E, cip::logical_path(1, 0, 3))).general, 0x14);
-  EXPECT_EQ(hex(ask(cip::encode_request(0x0E, cip::logical_path(4, 0, 1))).data), "02 00");
-  EXPECT_EQ(hex(ask(cip::encode_request(0x0E, cip::logical_path(4, 0, 2))).data), "99 00");
+  EXPECT_EQ(hex(ask(cip::encode_request(0x0E, cip::logical_path(1, 0, 1)).value()).data), "01 00");
+  EXPECT_EQ(hex(ask(cip::encode_request(0x0E, cip::logical_path(1, 0, 2)).value()).data), "01 00");
+  EXPECT_EQ(ask(cip::encode_request(0x0E, cip::logical_path(1, 0, 3)).value()).general, 0x14);
+  EXPECT_EQ(hex(ask(cip::encode_request(0x0E, cip::logical_path(4, 0, 1)).value()).data), "02 00");
+  EXPECT_EQ(hex(ask(cip::encode_request(0x0E, cip::logical_path(4, 0, 2)).value()).data), "99 00");
+}
+
+// A reply too large for the item and the encapsulation that carry it is not
+// sent cut: the TCP connection closes, and the event names the field.
+TEST_F(sim_handler, a_reply_too_large_to_send_closes_the_connection) {
+  auto r = handle_encap(s_, l_, cip::encode_encap(cip::command::register_session, 0, {}, cip::register_session_data()).value(), true, now_);
+  ASSERT_TRUE(r.reply);
+  s_.dev.assembly(100)->data.assign(70000, 0x5A);
+  const auto get = cip::encode_request(cip::service::get_attribute_single, cip::logical_path(4, 100, 3)).value();
+  const auto out = handle_encap(s_, l_, cip::encode_encap(cip::command::send_rr_data, l_.session, {}, cip::send_rr_data(get, 5).value()).value(), true, now_);
+  EXPECT_FALSE(out.reply);
+  EXPECT_TRUE(out.close);
+  ASSERT_FALSE(s_.log.empty());
+  EXPECT_NE(s_.log.back().find("\"event\":\"too-large\""), std::string::npos) << s_.log.back();
+  EXPECT_NE(s_.log.back().find("\"field\":\"CPF item length\""), std::string::npos) << s_.log.back();
+}
+
+// A connection whose T->O frame would be over cip::max_io_frame_size
+// produces none: it is closed, with the reason logged.
+TEST_F(sim_handler, a_connection_whose_frames_do_not_fit_is_closed) {
+  ASSERT_EQ(forward_open(live_test::opener_connection1_request()).general, 0);
+  ASSERT_EQ(s_.connections.size(), 1u);
+  auto& p = s_.dev.points[*s_.connections.front().point];
+  p.plan.facts.input_size = static_cast<std::uint32_t>(cip::max_io_frame_size - 10);
+  s_.log.clear();
+  const auto frames = produce_io(s_, now_ + 30ms);  // one RPI on, before the timeout
+  EXPECT_TRUE(frames.empty());
+  EXPECT_TRUE(s_.connections.empty());
+  ASSERT_EQ(s_.log.size(), 2u);
+  EXPECT_NE(s_.log[0].find("\"field\":\"class 1 frame size\""), std::string::npos) << s_.log[0];
+  EXPECT_NE(s_.log[1].find("\"event\":\"close\""), std::string::npos) << s_.log[1];
 }
 
 }  // namespace

@@ -39,7 +39,7 @@ class sim_objects : public ::testing::Test {
   }
   cip::reply ask(std::uint8_t service, std::uint32_t cls, std::uint32_t instance, std::optional<std::uint32_t> attr,
                  const std::string& data = "") {
-    const auto r = handle_cip(s_, l_, cip::encode_request(service, cip::logical_path(cls, instance, attr), unhex(data)), now_);
+    const auto r = handle_cip(s_, l_, cip::encode_request(service, cip::logical_path(cls, instance, attr), unhex(data)).value(), now_);
     auto rep = cip::decode_reply(r, 0);
     EXPECT_TRUE(rep.ok());
     return rep.ok() ? rep.value() : cip::reply{};
@@ -179,11 +179,11 @@ TEST_F(sim_file, transfers_go_in_order_and_a_lost_reply_is_sent_again) {
 // What a configuration tool does: SendRRData on a session, Initiate_Upload
 // with the largest transfer size, Upload_Transfer until the last packet.
 TEST_F(sim_file, an_upload_through_the_encapsulation_returns_the_file_byte_for_byte) {
-  const auto reg = handle_encap(s_, l_, cip::encode_encap(cip::command::register_session, 0, {}, cip::register_session_data()), true, now_);
+  const auto reg = handle_encap(s_, l_, cip::encode_encap(cip::command::register_session, 0, {}, cip::register_session_data()).value(), true, now_);
   ASSERT_TRUE(reg.reply);
   auto send = [&](std::uint8_t service, const std::string& data) {
-    const auto q = cip::encode_request(service, cip::logical_path(0x37, 0xC8), unhex(data));
-    const auto out = handle_encap(s_, l_, cip::encode_encap(cip::command::send_rr_data, l_.session, {}, cip::send_rr_data(q, 5)), true, now_);
+    const auto q = cip::encode_request(service, cip::logical_path(0x37, 0xC8), unhex(data)).value();
+    const auto out = handle_encap(s_, l_, cip::encode_encap(cip::command::send_rr_data, l_.session, {}, cip::send_rr_data(q, 5).value()).value(), true, now_);
     EXPECT_TRUE(out.reply);
     auto item = cip::decode_send_rr_data(cip::byte_view(*out.reply).subspan(24), 24);
     EXPECT_TRUE(item.ok());

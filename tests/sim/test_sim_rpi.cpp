@@ -72,7 +72,7 @@ status open(state& s, const model::device& dev, std::uint32_t number, std::uint3
     fo.originator_serial = 0x63736465;
     if (ot_rpi != 0) fo.ot_rpi_us = ot_rpi;
     if (to_rpi != 0) fo.to_rpi_us = to_rpi;
-    const auto r = status_of(ask(s, cip::encode_forward_open(fo)));
+    const auto r = status_of(ask(s, cip::encode_forward_open(fo).value()));
     s.connections.clear();
     return r;
   }
@@ -90,7 +90,7 @@ class sim_rpi : public ::testing::Test {
     return sim::open(s_, analysis_->dev, number, ot_rpi, to_rpi);
   }
   std::string param_attribute(std::uint32_t instance, std::uint32_t attr) {
-    const auto r = ask(s_, cip::encode_request(0x0E, cip::logical_path(0x0F, instance, attr)));
+    const auto r = ask(s_, cip::encode_request(0x0E, cip::logical_path(0x0F, instance, attr)).value());
     EXPECT_EQ(r.general, 0);
     return hex(r.data);
   }
@@ -132,7 +132,7 @@ TEST_F(sim_rpi, a_parameters_limits_are_the_limits_forward_open_applies) {
   EXPECT_EQ(open(2, 500000, 500000), ok);
   EXPECT_EQ(open(2, 999, 1000), rpi_refused);
   EXPECT_EQ(open(2, 600000, 600000), rpi_refused) << "the EDS's default lies outside its own limits";
-  EXPECT_EQ(ask(s_, cip::encode_request(0x10, cip::logical_path(0x0F, 1, 1), unhex("C0 27 09 00"))).general, 0x09);
+  EXPECT_EQ(ask(s_, cip::encode_request(0x10, cip::logical_path(0x0F, 1, 1), unhex("C0 27 09 00")).value()).general, 0x09);
 }
 
 // A parameter that gives no limits: the Parameter object reports the

@@ -50,7 +50,7 @@ class sim_scanners : public ::testing::Test {
     fo.to = {10, false, cip::conn_priority::low, to_type, false};
     cip::put_key(fo.path, {0xFFFF, 12, 7, 1, 2, true});
     cip::put_bytes(fo.path, live_test::unhex(path));
-    auto r = s.request_raw(cip::service::forward_open, cip::encode_forward_open(fo));
+    auto r = s.request_raw(cip::service::forward_open, cip::encode_forward_open(fo).value());
     EXPECT_TRUE(r.ok());
     return !r ? cip::reply{} : *r;
   }

@@ -89,7 +89,7 @@ soak_result soak(unsigned connections, std::uint32_t rpi_us, int seconds) {
     fo.to = {10, false, cip::conn_priority::low, cip::conn_type::point_to_point, false};
     cip::put_key(fo.path, {0xFFFF, 12, 7, 1, 2, true});
     cip::put_bytes(fo.path, live_test::unhex("20 04 24 97 2C 98 2C 64"));
-    auto rep = s.request_raw(cip::service::forward_open, cip::encode_forward_open(fo));
+    auto rep = s.request_raw(cip::service::forward_open, cip::encode_forward_open(fo).value());
     if (!rep || rep->general != 0) break;
     const auto ok = cip::decode_forward_open_ok(rep->data, 0);
     if (!ok.ok()) break;
@@ -114,7 +114,7 @@ soak_result soak(unsigned connections, std::uint32_t rpi_us, int seconds) {
         f.connection_id = ot_id;
         f.encap_sequence = hb_sequence;
         f.sequence_count = static_cast<std::uint16_t>(hb_sequence);
-        const auto b = cip::encode_io_frame(f);
+        const auto b = cip::encode_io_frame(f).value();
         (void)::sendto(sock, b.data(), b.size(), 0, reinterpret_cast<const sockaddr*>(&device), sizeof device);
       }
       next_heartbeat += heartbeat;

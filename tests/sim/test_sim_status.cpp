@@ -35,9 +35,9 @@ class sim_status : public ::testing::Test {
   }
   // Identity attribute 5, and the status of the ListIdentity item: the same word.
   std::string status_word() {
-    const auto attr = hex(ask(cip::encode_request(0x0E, cip::logical_path(1, 1, 5))).data);
+    const auto attr = hex(ask(cip::encode_request(0x0E, cip::logical_path(1, 1, 5)).value()).data);
     link udp{0x0100007F, 0};
-    const auto out = handle_encap(s_, udp, cip::encode_encap(cip::command::list_identity, 0, {}, {}), false, now_);
+    const auto out = handle_encap(s_, udp, cip::encode_encap(cip::command::list_identity, 0, {}, {}).value(), false, now_);
     const auto ids = cip::decode_list_identity(cip::byte_view(*out.reply).subspan(24), 24);
     EXPECT_TRUE(ids.ok());
     cip::bytes word;
@@ -46,7 +46,7 @@ class sim_status : public ::testing::Test {
     return attr;
   }
   std::uint32_t open(const cip::forward_open_request& fo) {
-    const auto rep = ask(cip::encode_forward_open(fo));
+    const auto rep = ask(cip::encode_forward_open(fo).value());
     EXPECT_EQ(rep.general, 0) << hex(rep.data);
     return rep.general == 0 ? cip::decode_forward_open_ok(rep.data, 0)->ot_connection_id : 0;
   }
@@ -56,7 +56,7 @@ class sim_status : public ::testing::Test {
     f.sequence_count = sequence;
     f.run_idle = run ? 1 : 0;
     f.data.assign(32, fill);
-    consume_io(s_, cip::encode_io_frame(f), l_.peer_ip, now_);
+    consume_io(s_, cip::encode_io_frame(f).value(), l_.peer_ip, now_);
   }
   std::string log_text() const {
     std::string all;
@@ -114,7 +114,7 @@ TEST_F(sim_status, a_run_to_idle_change_with_the_same_data_is_logged) {
 TEST_F(sim_status, every_refused_forward_open_is_logged_with_why) {
   auto fo = live_test::opener_connection1_request();
   fo.ot_rpi_us = fo.to_rpi_us = 20'000'000;
-  EXPECT_EQ(ask(cip::encode_forward_open(fo)).general, 0x01);
+  EXPECT_EQ(ask(cip::encode_forward_open(fo).value()).general, 0x01);
   ASSERT_EQ(s_.log.size(), 1u);
   EXPECT_NE(s_.log[0].find("\"event\":\"refused\""), std::string::npos) << s_.log[0];
   EXPECT_NE(s_.log[0].find("\"connection\":1"), std::string::npos) << s_.log[0];
@@ -124,7 +124,7 @@ TEST_F(sim_status, every_refused_forward_open_is_logged_with_why) {
   s_.log.clear();
   fo = live_test::opener_connection1_request();
   fo.ot.size = 39;
-  EXPECT_EQ(ask(cip::encode_forward_open(fo)).general, 0x01);
+  EXPECT_EQ(ask(cip::encode_forward_open(fo).value()).general, 0x01);
   ASSERT_EQ(s_.log.size(), 1u);
   EXPECT_NE(s_.log[0].find("\"extended\":\"0x0127\""), std::string::npos) << s_.log[0];
   EXPECT_NE(s_.log[0].find("O->T size 39 asked; Connection1 serves 38 (32 data bytes + 2 sequence + 4 run/idle)"),
@@ -133,7 +133,7 @@ TEST_F(sim_status, every_refused_forward_open_is_logged_with_why) {
   s_.log.clear();
   fo = live_test::opener_connection1_request();
   fo.path.back() = 0x65;
-  EXPECT_EQ(ask(cip::encode_forward_open(fo)).general, 0x01);
+  EXPECT_EQ(ask(cip::encode_forward_open(fo).value()).general, 0x01);
   ASSERT_EQ(s_.log.size(), 1u);
   EXPECT_NE(s_.log[0].find("\"extended\":\"0x012F\""), std::string::npos) << s_.log[0];
   EXPECT_NE(s_.log[0].find("no ConnectionN has the application path class 4, instance 151, connection point 150, "
@@ -142,13 +142,13 @@ TEST_F(sim_status, every_refused_forward_open_is_logged_with_why) {
   s_.log.clear();
   fo = live_test::opener_connection1_request();
   fo.path[6] = 0xEA;
-  EXPECT_EQ(ask(cip::encode_forward_open(fo)).general, 0x01);
+  EXPECT_EQ(ask(cip::encode_forward_open(fo).value()).general, 0x01);
   ASSERT_EQ(s_.log.size(), 1u);
   EXPECT_NE(s_.log[0].find("\"extended\":\"0x0114\""), std::string::npos) << s_.log[0];
   EXPECT_NE(s_.log[0].find("product code 65002"), std::string::npos) << s_.log[0];
   // A Forward_Open too short to read: 0x13, and a line saying so.
   s_.log.clear();
-  EXPECT_EQ(ask(cip::encode_request(0x54, cip::logical_path(6, 1), unhex("0A 0E 00"))).general, 0x13);
+  EXPECT_EQ(ask(cip::encode_request(0x54, cip::logical_path(6, 1), unhex("0A 0E 00")).value()).general, 0x13);
   ASSERT_EQ(s_.log.size(), 1u);
   EXPECT_NE(s_.log[0].find("{\"event\":\"refused\",\"status\":\"0x13\",\"why\":\"the Forward_Open cannot be read: "),
             std::string::npos)
@@ -161,16 +161,16 @@ TEST_F(sim_status, every_refused_forward_open_is_logged_with_why) {
 // of OpENer documents it so; OpENer itself answers 0x0129).
 TEST_F(sim_status, a_wrong_configuration_size_is_0x0126_with_the_size_in_words) {
   auto fo = live_test::opener_connection1_request();
-  cip::put_data_segment(fo.path, cip::bytes(12, 0x5A));
-  const auto rep = ask(cip::encode_forward_open(fo));
+  EXPECT_TRUE(cip::put_data_segment(fo.path, cip::bytes(12, 0x5A)).ok());
+  const auto rep = ask(cip::encode_forward_open(fo).value());
   EXPECT_EQ(rep.general, 0x01);
   EXPECT_EQ(rep.additional, (std::vector<std::uint16_t>{0x0126, 5}));
   ASSERT_FALSE(s_.log.empty());
   EXPECT_NE(s_.log.back().find("12 bytes of configuration data asked; Connection1 serves 10"), std::string::npos)
       << s_.log.back();
   fo = live_test::opener_connection1_request();
-  cip::put_data_segment(fo.path, cip::bytes(10, 0x5A));
-  EXPECT_EQ(ask(cip::encode_forward_open(fo)).general, 0);
+  EXPECT_TRUE(cip::put_data_segment(fo.path, cip::bytes(10, 0x5A)).ok());
+  EXPECT_EQ(ask(cip::encode_forward_open(fo).value()).general, 0);
 }
 
 }  // namespace
