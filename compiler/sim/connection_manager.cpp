@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cip/device_reply.hpp"
+#include "sim/object_table.hpp"
 #include "sim/objects.hpp"
 #include "sim/refusal.hpp"
 
@@ -205,15 +206,16 @@ bytes forward_close(state& s, const cip::request& q) {
 
 }  // namespace
 
-bytes connection_manager(state& s, const link& l, const cip::request& q, const cip::object_address& a,
-                         clock::time_point now) {
-  if (a.instance != 1 || a.attribute) return cip::encode_reply(q.service, general::path_destination_unknown);
-  switch (q.service) {
-    case cip::service::forward_open:
-    case cip::service::large_forward_open: return forward_open(s, l, q, now);
-    case cip::service::forward_close: return forward_close(s, q);
-    default: return cip::encode_reply(q.service, general::service_not_supported);
-  }
+object_table connection_manager_table() {
+  object_table t;
+  t.class_id = cip::code(cip::class_id::connection_manager);
+  t.exists = [](const state&, std::uint32_t i) { return i == 1; };
+  t.attribute_paths = false;
+  const auto open = [](object_call& c) { return forward_open(c.s, c.l, c.q, c.now); };
+  t.services = {{cip::service::forward_open, open},
+                {cip::service::large_forward_open, open},
+                {cip::service::forward_close, [](object_call& c) { return forward_close(c.s, c.q); }}};
+  return t;
 }
 
 }  // namespace edsc::sim

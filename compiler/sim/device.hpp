@@ -101,6 +101,7 @@ struct device {
   eds_file file;
 
   [[nodiscard]] parameter_instance* param(std::uint32_t number);
+  [[nodiscard]] const parameter_instance* param(std::uint32_t number) const;
 
   [[nodiscard]] assembly_instance* assembly(std::uint32_t instance);
   [[nodiscard]] const assembly_instance* assembly(std::uint32_t instance) const;
