@@ -16,15 +16,13 @@ namespace edsc::emit {
 // data item header 4, sequence count 2, run/idle header 4.
 inline constexpr std::uint32_t opener_max_assembly_bytes = 512 - 24;
 
-enum class opener_point_kind : std::uint8_t { exclusive_owner, input_only, listen_only };
-
 struct opener_assembly {
   std::uint32_t instance = 0, size = 0;
   const char* role = "";  // "input", "output", "configuration", for the comment
 };
 
 struct opener_point {
-  opener_point_kind kind = opener_point_kind::exclusive_owner;
+  model::app_type kind = model::app_type::exclusive_owner;
   unsigned index = 0;  // OpENer's connection_number: counted per kind from 0
   std::uint32_t connection = 0;  // the ConnectionN it serves
   std::string name;

@@ -11,7 +11,7 @@
 #include "diag/plural.hpp"
 #include "live/interrupt.hpp"
 #include "live/io.hpp"
-#include "live/plan.hpp"
+#include "connections/plan.hpp"
 #include "live/session.hpp"
 
 namespace edsc::live {

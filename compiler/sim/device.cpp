@@ -97,29 +97,26 @@ cip::identity identity_of(const model::device_info& m, std::uint32_t serial) {
 
 // Why the simulator cannot serve a planned connection; empty when it can
 // (`app_path` then holds its application path).
-std::string unserved_why(const model::device& dev, const live::connection_plan& p, cip::bytes& app_path) {
+std::string unserved_why(const model::device& dev, const connections::connection_plan& p, cip::bytes& app_path) {
   const auto& c = *p.conn;
   if (!c.decoded) return "its trigger/transport or parameters field is not a number";
   if (!(c.tt.transport_classes & 0x2)) return "it is not a class 1 connection";
   const auto* path = dev.path_of(c.path);
   if (path == nullptr) return "it has no connection path";
-  if (auto why = live::encode_connection_path(dev, *path, app_path)) return *why;
+  if (auto why = connections::encode_connection_path(dev, *path, app_path)) return *why;
   return {};
 }
 
 // One connection point per ConnectionN served, with the assemblies it names.
 void add_points(const model::device& dev, device& d) {
-  for (auto& p : live::plan_connections(dev)) {
+  for (auto& p : connections::plan_connections(dev)) {
     connection_point cp;
     cp.number = p.conn->number;
     if (auto why = unserved_why(dev, p, cp.app_path); !why.empty()) {
       d.skipped.push_back({cp.number, std::move(why)});
       continue;
     }
-    const auto& c = *p.conn;
-    cp.kind = p.listen_only                               ? point_kind::listen_only
-              : c.tt.input_only && !c.tt.exclusive_owner ? point_kind::input_only
-                                                         : point_kind::exclusive_owner;
+    cp.kind = p.kind.type;
     const auto& f = p.facts;
     add_assembly(d, f.input_instance, f.input_size, assembly_role::input);
     add_assembly(d, f.output_instance, f.output_size, assembly_role::output);
@@ -140,7 +137,7 @@ device build_device(const model::device& dev, std::uint32_t serial) {
   device d;
   d.id = identity_of(dev.identity, serial);
   add_points(dev, d);
-  for (const auto& t : live::plan_assemblies(dev)) add_assembly(d, t.instance, t.eds_size.value_or(0), assembly_role::other);
+  for (const auto& t : connections::plan_assemblies(dev)) add_assembly(d, t.instance, t.eds_size.value_or(0), assembly_role::other);
   std::sort(d.assemblies.begin(), d.assemblies.end(),
             [](const auto& a, const auto& b) { return a.instance < b.instance; });
   add_parameters(dev, d);

@@ -156,7 +156,7 @@ parameter_instance make_instance(const model::device& dev, const model::param& p
     pi.read_only = true;
   }
   pi.value = pi.def;
-  if (const auto* path = dev.path_of(p.link_path); path != nullptr && live::encode_connection_path(dev, *path, pi.link_path))
+  if (const auto* path = dev.path_of(p.link_path); path != nullptr && connections::encode_connection_path(dev, *path, pi.link_path))
     pi.link_path.clear();  // a path the device cannot write out ([ParamN] in it): none
   pi.multiplier = number_or<std::uint16_t>(p.scaling_multiplier, 1);
   pi.divisor = number_or<std::uint16_t>(p.scaling_divisor, 1);
