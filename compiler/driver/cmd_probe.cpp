@@ -18,7 +18,7 @@
 #include "driver/verify_live.hpp"
 #include "io/collect_inputs.hpp"
 #include "io/output_target.hpp"
-#include "live/plan.hpp"
+#include "connections/plan.hpp"
 #include "live/probe.hpp"
 #include "live/client.hpp"
 #include "live/upload.hpp"
@@ -59,7 +59,7 @@ std::vector<library_match> match_library(const io::collected_inputs& inputs, con
     m.minor = d.min_rev.is_integer() ? static_cast<unsigned>(d.min_rev.as_uint()) : 0;
     m.verdict = live::keying_verdict(m.major, m.minor, id.major, id.minor);
     if (d.vend_name.ok()) m.vendor_name = std::string(d.vend_name.text);
-    for (const auto& t : live::plan_assemblies(a->dev)) m.instances.push_back(t.instance);
+    for (const auto& t : connections::plan_assemblies(a->dev)) m.instances.push_back(t.instance);
     out.push_back(std::move(m));
   }
   // Exact first, then compatible, then the others.

@@ -76,12 +76,12 @@ class planner {
     const auto* c = model_connection(dev_, f.number);
     if (c == nullptr) return;  // a proxy entry: not an I/O connection of this device
     const auto tt = model::decode_trigger(f.trigger_transport);
-    const int kinds = (tt.exclusive_owner ? 1 : 0) + (tt.input_only ? 1 : 0) + (tt.listen_only ? 1 : 0);
-    if (!c->decoded || kinds != 1) {
+    const auto kind = model::classify(tt, f.config_size > 0 && f.config_instance != 0);
+    if (!c->decoded || !kind.unambiguous()) {
       report(diag_id::opener_connection_kind, where_of(*c, c->trigger),
              fmt::format("Connection{}: {}", f.number,
                          !c->decoded ? "its trigger/transport is not a number OpENer's kinds can be read from"
-                         : kinds == 0 ? (tt.redundant_owner ? "redundant owner has no OpENer connection point"
+                         : kind.named == 0 ? (tt.redundant_owner ? "redundant owner has no OpENer connection point"
                                                             : "it names no transport type (exclusive owner, input only, listen only)")
                                       : "it names more than one transport type; OpENer configures one kind per point"));
       return;
@@ -96,11 +96,9 @@ class planner {
                   c->target_config_format))
       return;
     opener_point p;
-    p.kind = tt.exclusive_owner ? opener_point_kind::exclusive_owner
-             : tt.input_only    ? opener_point_kind::input_only
-                                : opener_point_kind::listen_only;
-    auto& count = p.kind == opener_point_kind::exclusive_owner ? plan.exclusive_owner
-                  : p.kind == opener_point_kind::input_only    ? plan.input_only
+    p.kind = kind.type;
+    auto& count = p.kind == model::app_type::exclusive_owner ? plan.exclusive_owner
+                  : p.kind == model::app_type::input_only    ? plan.input_only
                                                                : plan.listen_only;
     p.index = count++;
     p.connection = f.number;
@@ -108,11 +106,10 @@ class planner {
     p.output_instance = f.output_instance;
     p.input_instance = f.input_instance;
     p.config_instance = f.config_instance;
-    const auto kind = p.kind;
     plan.points.push_back(std::move(p));
     // Run/idle is one build option per direction; only the owner's O->T
     // carries data (input and listen only send heartbeats).
-    if (kind == opener_point_kind::exclusive_owner) direction(*c, f.output_run_idle, consumed_, "O->T");
+    if (kind.type == model::app_type::exclusive_owner) direction(*c, f.output_run_idle, consumed_, "O->T");
     direction(*c, f.input_run_idle, produced_, "T->O");
   }
 

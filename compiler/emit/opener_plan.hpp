@@ -22,15 +22,13 @@ inline constexpr std::uint32_t opener_default_buffer_bytes = 512;
 inline constexpr std::uint32_t opener_buffer_headroom = 64;
 inline constexpr std::uint32_t opener_max_assembly_bytes = 65535 - opener_buffer_headroom;
 
-enum class opener_point_kind : std::uint8_t { exclusive_owner, input_only, listen_only };
-
 struct opener_assembly {
   std::uint32_t instance = 0, size = 0;
   const char* role = "";  // "input", "output", "configuration", for the comment
 };
 
 struct opener_point {
-  opener_point_kind kind = opener_point_kind::exclusive_owner;
+  model::app_type kind = model::app_type::exclusive_owner;
   unsigned index = 0;  // OpENer's connection_number: counted per kind from 0
   std::uint32_t connection = 0;  // the ConnectionN it serves
   std::string name;

@@ -34,11 +34,11 @@ std::string banner(const opener_plan& p, const char* open, const char* line, con
                      open, comment_text(p.source_name), line, p.source_sha256, line, close);
 }
 
-const char* kind_call(opener_point_kind k) {
+const char* kind_call(model::app_type k) {
   switch (k) {
-    case opener_point_kind::exclusive_owner: return "ConfigureExclusiveOwnerConnectionPoint";
-    case opener_point_kind::input_only: return "ConfigureInputOnlyConnectionPoint";
-    case opener_point_kind::listen_only: return "ConfigureListenOnlyConnectionPoint";
+    case model::app_type::exclusive_owner: return "ConfigureExclusiveOwnerConnectionPoint";
+    case model::app_type::input_only: return "ConfigureInputOnlyConnectionPoint";
+    case model::app_type::listen_only: return "ConfigureListenOnlyConnectionPoint";
   }
   return "";
 }

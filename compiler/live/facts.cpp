@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "live/client.hpp"
-#include "live/plan.hpp"
+#include "connections/plan.hpp"
 #include "net/interrupt.hpp"
 
 namespace edsc::live {

@@ -8,10 +8,15 @@
 #include <string>
 #include <vector>
 
-#include "live/plan.hpp"
+#include "connections/plan.hpp"
 #include "live/client.hpp"
 
 namespace edsc::live {
+
+// The plan of each connection is the connections room's, shared with the simulator.
+using connections::connection_plan;
+using connections::plan_assemblies;
+using connections::plan_connections;
 
 struct io_stats {
   unsigned frames = 0;          // T->O frames of this connection

@@ -9,7 +9,7 @@
 #include "base/plural.hpp"
 #include "live/facts.hpp"
 #include "live/io.hpp"
-#include "live/plan.hpp"
+#include "connections/plan.hpp"
 
 namespace edsc::live {
 

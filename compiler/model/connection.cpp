@@ -21,6 +21,17 @@ trigger_transport decode_trigger(std::uint32_t v) {
   return t;
 }
 
+app_kind classify(const trigger_transport& tt, bool configured) {
+  app_kind k;
+  k.named = (tt.exclusive_owner ? 1u : 0u) + (tt.input_only ? 1u : 0u) + (tt.listen_only ? 1u : 0u);
+  k.type = tt.exclusive_owner ? app_type::exclusive_owner
+           : tt.input_only    ? app_type::input_only
+           : tt.listen_only   ? app_type::listen_only
+                              : app_type::exclusive_owner;
+  k.configured = configured;
+  return k;
+}
+
 connection_params decode_params(std::uint32_t v) {
   connection_params p;
   // O->T uses the lower bit of each pair/nibble, T->O the upper one.

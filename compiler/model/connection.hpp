@@ -31,6 +31,24 @@ struct connection_params {
 [[nodiscard]] trigger_transport decode_trigger(std::uint32_t v);
 [[nodiscard]] connection_params decode_params(std::uint32_t v);
 
+// What a class 1 connection point is to the device that serves it, by the
+// application type bits 24-26 of field 1 (EDS_FORMAT.md §3.11.2): the one
+// rule the simulator, the client and the OpENer generator share.
+enum class app_type : std::uint8_t { exclusive_owner, input_only, listen_only };
+
+struct app_kind {
+  // The type named; where field 1 names several, the most an originator
+  // gets from the point (an owner's outputs, then inputs with a heartbeat,
+  // then inputs another connection produces); where it names none, an
+  // exclusive owner, what a connection with outputs of its own is.
+  app_type type = app_type::exclusive_owner;
+  unsigned named = 0;  // how many of bits 24-26 are set: only 1 is unambiguous
+  bool configured = false;  // the point takes configuration data (a configuration assembly)
+  [[nodiscard]] bool unambiguous() const { return named == 1; }
+};
+
+[[nodiscard]] app_kind classify(const trigger_transport& tt, bool configured);
+
 enum class connection_kind : std::uint8_t { connection, proxy, proxied };
 
 // ConnectionN (and ProxyConnectN / ProxiedConnectN, §3.18, which hold the

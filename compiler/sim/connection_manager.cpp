@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cip/device_reply.hpp"
+#include "sim/object_table.hpp"
 #include "sim/objects.hpp"
 #include "sim/refusal.hpp"
 
@@ -38,6 +39,113 @@ std::string triple(const cip::forward_open_request& fo) {
                      fo.originator_vendor, fo.originator_serial);
 }
 
+// A Forward_Open's connection path split: the key checked, the data segment
+// (configuration) kept, the rest the application path.
+struct split_path {
+  std::vector<cip::path_segment> app;
+  std::optional<cip::byte_view> config;
+};
+
+std::optional<refusal> split(const state& s, const cip::forward_open_request& fo, split_path& out) {
+  auto segs = cip::decode_path(fo.path, 0);
+  if (!segs) return refusal{ext::invalid_segment_in_path, {}, "the connection path: " + segs.error().what};
+  for (const auto& sg : segs.value()) {
+    if (sg.type == cip::segment_type::key) {
+      if (auto r = check_key(s.dev.id, sg.key)) return r;
+    } else if (sg.type == cip::segment_type::data) {
+      out.config = sg.data;
+    } else {
+      out.app.push_back(sg);
+    }
+  }
+  return std::nullopt;
+}
+
+clock::duration timeout_of(const cip::forward_open_request& fo, std::uint32_t rpi) {
+  return std::chrono::duration_cast<clock::duration>(std::chrono::microseconds(
+      static_cast<std::uint64_t>(rpi) * (4u << std::min<unsigned>(fo.timeout_multiplier, 7))));
+}
+
+// Explicit messaging: a class 3 connection to the Message Router.
+std::optional<refusal> open_explicit(state& s, const cip::forward_open_request& fo, const split_path& sp,
+                                     open_connection& oc, clock::time_point now) {
+  cip::path_segment router_class, router_instance;
+  router_class.value = 2;  // type is class_id by default
+  router_instance.type = cip::segment_type::instance;
+  router_instance.value = 1;
+  const std::vector<cip::path_segment> router{router_class, router_instance};
+  if (sp.app != router)
+    return refusal{ext::inconsistent_path_combination, {},
+                   "a class 3 connection goes to the Message Router (class 2, instance 1), not to " + path_words(sp.app)};
+  if (s.connections.size() >= s.max_connections)
+    return refusal{ext::out_of_connections, {},
+                   fmt::format("{} connections are open, the most the simulator holds", s.connections.size())};
+  oc.ot_id = s.next_connection_id++;
+  oc.to_id = fo.to_connection_id != 0 ? fo.to_connection_id : s.next_connection_id++;
+  oc.timeout = timeout_of(fo, std::max<std::uint32_t>(fo.ot_rpi_us, 1000));
+  oc.expires = now + oc.timeout;
+  return std::nullopt;
+}
+
+// The configuration a Forward_Open carries, written into the point's configuration assembly.
+void take_config(state& s, const connection_point& p, std::optional<cip::byte_view> config) {
+  if (!config || p.plan.facts.config_instance == 0) return;
+  auto* a = s.dev.assembly(p.plan.facts.config_instance);
+  if (a == nullptr) return;
+  a->data.assign(config->begin(), config->begin() + static_cast<std::ptrdiff_t>(std::min(config->size(), a->data.size())));
+  a->data.resize(p.plan.facts.config_size, 0);
+  log_event(s, "config", fmt::format("\"instance\":{},\"by\":\"Forward_Open\",\"data\":\"{}\"", a->instance, hex(a->data)));
+}
+
+// Class 1 I/O: the first ConnectionN of the same application path that
+// accepts the request; else the refusal of the first that had the path.
+// `refused_number` is the ConnectionN a refusal was held against.
+std::optional<refusal> open_io(state& s, const cip::forward_open_request& fo, const split_path& sp,
+                               open_connection& oc, clock::time_point now, std::uint32_t& refused_number) {
+  std::optional<refusal> first;
+  std::optional<std::size_t> chosen;
+  for (std::size_t i = 0; i < s.dev.points.size() && !chosen; ++i) {
+    const auto& p = s.dev.points[i];
+    if (p.segments.empty() || p.segments != sp.app) continue;
+    if (auto r = check_point(s, p, fo, sp.config)) {
+      if (!first) first = std::move(r), refused_number = p.number;
+    } else {
+      chosen = i;
+    }
+  }
+  if (!chosen)
+    return first ? first
+                 : refusal{ext::inconsistent_path_combination, {}, "no ConnectionN has the application path " + path_words(sp.app)};
+  oc.point = chosen;
+  oc.consumes = fo.ot.type != cip::conn_type::null;
+  oc.produces = fo.to.type != cip::conn_type::null;
+  oc.ot_id = s.next_connection_id++;
+  oc.to_id = fo.to.type == cip::conn_type::point_to_point && fo.to_connection_id != 0 ? fo.to_connection_id
+                                                                                       : s.next_connection_id++;
+  oc.timeout = timeout_of(fo, oc.consumes ? fo.ot_rpi_us : fo.to_rpi_us);
+  oc.expires = now + oc.timeout;
+  oc.next_produce = now;
+  take_config(s, s.dev.points[*chosen], sp.config);
+  return std::nullopt;
+}
+
+// The connection opened: logged, kept, and the success reply.
+bytes accept(state& s, const cip::request& q, const cip::forward_open_request& fo, const open_connection& oc) {
+  cip::forward_open_reply rep;
+  rep.ot_connection_id = oc.ot_id;
+  rep.to_connection_id = oc.to_id;
+  rep.connection_serial = fo.connection_serial;
+  rep.originator_vendor = fo.originator_vendor;
+  rep.originator_serial = fo.originator_serial;
+  rep.ot_api_us = fo.ot_rpi_us;
+  rep.to_api_us = fo.to_rpi_us;
+  log_event(s, "open",
+            fmt::format("{},\"connection\":{},\"class\":{},\"ot_rpi_us\":{},\"to_rpi_us\":{}", triple(fo),
+                        oc.point ? s.dev.points[*oc.point].number : 0, fo.transport & 0x0F, fo.ot_rpi_us, fo.to_rpi_us));
+  s.connections.push_back(oc);
+  return cip::encode_reply(q.service, general::success, {}, cip::forward_open_ok_data(rep).value());  // no application reply: fits
+}
+
 bytes forward_open(state& s, const link& l, const cip::request& q, clock::time_point now) {
   const bool large = q.service == cip::service::large_forward_open;
   auto parsed = cip::decode_forward_open(q.data, large, 0);
@@ -55,25 +163,13 @@ bytes forward_open(state& s, const link& l, const cip::request& q, clock::time_p
                     {ext::connection_in_use, {},
                      fmt::format("a connection of serial {}, originator vendor {} and serial {} is already open",
                                  fo.connection_serial, fo.originator_vendor, fo.originator_serial)});
-  auto segs = cip::decode_path(fo.path, 0);
-  if (!segs) return refuse(s, q, fo, {ext::invalid_segment_in_path, {}, "the connection path: " + segs.error().what});
-  std::vector<cip::path_segment> app;
-  std::optional<cip::byte_view> config;
-  for (const auto& sg : segs.value()) {
-    if (sg.type == cip::segment_type::key) {
-      if (auto r = check_key(s.dev.id, sg.key)) return refuse(s, q, fo, *r);
-    } else if (sg.type == cip::segment_type::data) {
-      config = sg.data;
-    } else {
-      app.push_back(sg);
-    }
-  }
+  split_path sp;
+  if (auto r = split(s, fo, sp)) return refuse(s, q, fo, *r);
   const unsigned transport_class = fo.transport & 0x0F;
-  const auto new_id = [&s] { return s.next_connection_id++; };
-  const auto timeout_of = [&](std::uint32_t rpi) {
-    return std::chrono::duration_cast<clock::duration>(std::chrono::microseconds(
-        static_cast<std::uint64_t>(rpi) * (4u << std::min<unsigned>(fo.timeout_multiplier, 7))));
-  };
+  if (transport_class != 1 && transport_class != 3)
+    return refuse(s, q, fo,
+                  {ext::transport_class_not_supported, {},
+                   fmt::format("transport class {} asked; the simulator serves classes 1 and 3", transport_class)});
   open_connection oc;
   oc.serial = fo.connection_serial;
   oc.vendor = fo.originator_vendor;
@@ -81,75 +177,10 @@ bytes forward_open(state& s, const link& l, const cip::request& q, clock::time_p
   oc.originator_ip = l.peer_ip;
   oc.ot_rpi_us = fo.ot_rpi_us;
   oc.to_rpi_us = fo.to_rpi_us;
-  if (transport_class == 3) {
-    // Explicit messaging: a class 3 connection to the Message Router.
-    cip::path_segment router_class, router_instance;
-    router_class.value = 2;  // type is class_id by default
-    router_instance.type = cip::segment_type::instance;
-    router_instance.value = 1;
-    const std::vector<cip::path_segment> router{router_class, router_instance};
-    if (app != router)
-      return refuse(s, q, fo,
-                    {ext::inconsistent_path_combination, {},
-                     "a class 3 connection goes to the Message Router (class 2, instance 1), not to " + path_words(app)});
-    if (s.connections.size() >= s.max_connections)
-      return refuse(s, q, fo,
-                    {ext::out_of_connections, {},
-                     fmt::format("{} connections are open, the most the simulator holds", s.connections.size())});
-    oc.ot_id = new_id();
-    oc.to_id = fo.to_connection_id != 0 ? fo.to_connection_id : new_id();
-    oc.timeout = timeout_of(std::max<std::uint32_t>(fo.ot_rpi_us, 1000));
-    oc.expires = now + oc.timeout;
-  } else if (transport_class != 1) {
-    return refuse(s, q, fo,
-                  {ext::transport_class_not_supported, {},
-                   fmt::format("transport class {} asked; the simulator serves classes 1 and 3", transport_class)});
-  } else {
-    std::optional<refusal> first;
-    std::uint32_t first_number = 0;
-    std::optional<std::size_t> chosen;
-    for (std::size_t i = 0; i < s.dev.points.size() && !chosen; ++i) {
-      const auto& p = s.dev.points[i];
-      if (p.segments.empty() || p.segments != app) continue;
-      if (auto r = check_point(s, p, fo, config)) {
-        if (!first) first = std::move(r), first_number = p.number;
-      } else {
-        chosen = i;
-      }
-    }
-    if (!chosen)
-      return first ? refuse(s, q, fo, *first, first_number)
-                   : refuse(s, q, fo, {ext::inconsistent_path_combination, {}, "no ConnectionN has the application path " + path_words(app)});
-    const auto& p = s.dev.points[*chosen];
-    oc.point = chosen;
-    oc.consumes = fo.ot.type != cip::conn_type::null;
-    oc.produces = fo.to.type != cip::conn_type::null;
-    oc.ot_id = new_id();
-    oc.to_id = fo.to.type == cip::conn_type::point_to_point && fo.to_connection_id != 0 ? fo.to_connection_id : new_id();
-    oc.timeout = timeout_of(oc.consumes ? fo.ot_rpi_us : fo.to_rpi_us);
-    oc.expires = now + oc.timeout;
-    oc.next_produce = now;
-    if (config && p.plan.facts.config_instance != 0)
-      if (auto* a = s.dev.assembly(p.plan.facts.config_instance)) {
-        a->data.assign(config->begin(), config->begin() + static_cast<std::ptrdiff_t>(std::min(config->size(), a->data.size())));
-        a->data.resize(p.plan.facts.config_size, 0);
-        log_event(s, "config", fmt::format("\"instance\":{},\"by\":\"Forward_Open\",\"data\":\"{}\"",
-                                           a->instance, hex(a->data)));
-      }
-  }
-  cip::forward_open_reply rep;
-  rep.ot_connection_id = oc.ot_id;
-  rep.to_connection_id = oc.to_id;
-  rep.connection_serial = fo.connection_serial;
-  rep.originator_vendor = fo.originator_vendor;
-  rep.originator_serial = fo.originator_serial;
-  rep.ot_api_us = fo.ot_rpi_us;
-  rep.to_api_us = fo.to_rpi_us;
-  log_event(s, "open",
-            fmt::format("{},\"connection\":{},\"class\":{},\"ot_rpi_us\":{},\"to_rpi_us\":{}", triple(fo),
-                        oc.point ? s.dev.points[*oc.point].number : 0, transport_class, fo.ot_rpi_us, fo.to_rpi_us));
-  s.connections.push_back(oc);
-  return cip::encode_reply(q.service, general::success, {}, cip::forward_open_ok_data(rep).value());  // no application reply: fits
+  std::uint32_t refused_number = 0;
+  auto r = transport_class == 3 ? open_explicit(s, fo, sp, oc, now) : open_io(s, fo, sp, oc, now, refused_number);
+  if (r) return refuse(s, q, fo, *r, refused_number);
+  return accept(s, q, fo, oc);
 }
 
 bytes forward_close(state& s, const cip::request& q) {
@@ -175,15 +206,16 @@ bytes forward_close(state& s, const cip::request& q) {
 
 }  // namespace
 
-bytes connection_manager(state& s, const link& l, const cip::request& q, const cip::object_address& a,
-                         clock::time_point now) {
-  if (a.instance != 1 || a.attribute) return cip::encode_reply(q.service, general::path_destination_unknown);
-  switch (q.service) {
-    case cip::service::forward_open:
-    case cip::service::large_forward_open: return forward_open(s, l, q, now);
-    case cip::service::forward_close: return forward_close(s, q);
-    default: return cip::encode_reply(q.service, general::service_not_supported);
-  }
+object_table connection_manager_table() {
+  object_table t;
+  t.class_id = cip::code(cip::class_id::connection_manager);
+  t.exists = [](const state&, std::uint32_t i) { return i == 1; };
+  t.attribute_paths = false;
+  const auto open = [](object_call& c) { return forward_open(c.s, c.l, c.q, c.now); };
+  t.services = {{cip::service::forward_open, open},
+                {cip::service::large_forward_open, open},
+                {cip::service::forward_close, [](object_call& c) { return forward_close(c.s, c.q); }}};
+  return t;
 }
 
 }  // namespace edsc::sim

@@ -78,44 +78,45 @@ const assembly_instance* device::assembly(std::uint32_t instance) const {
   return const_cast<device*>(this)->assembly(instance);
 }
 
-device build_device(const model::device& dev, std::uint32_t serial) {
-  device d;
-  const auto& m = dev.identity;
-  d.id.vendor = static_cast<std::uint16_t>(number_or_zero(m.vend_code));
-  d.id.device_type = static_cast<std::uint16_t>(number_or_zero(m.prod_type));
-  d.id.product_code = static_cast<std::uint16_t>(number_or_zero(m.prod_code));
-  d.id.major = static_cast<std::uint8_t>(number_or_zero(m.maj_rev));
-  d.id.minor = static_cast<std::uint8_t>(number_or_zero(m.min_rev));
-  d.id.serial = serial;
-  if (m.prod_name.ok()) d.id.product_name = std::string(m.prod_name.text);
-  d.id.state = 3;  // operational
-  d.id.sin_family = 2;
-  d.id.sin_port = cip::enip_port;
+namespace {
 
-  for (auto& p : live::plan_connections(dev)) {
-    const auto& c = *p.conn;
+cip::identity identity_of(const model::device_info& m, std::uint32_t serial) {
+  cip::identity id;
+  id.vendor = static_cast<std::uint16_t>(number_or_zero(m.vend_code));
+  id.device_type = static_cast<std::uint16_t>(number_or_zero(m.prod_type));
+  id.product_code = static_cast<std::uint16_t>(number_or_zero(m.prod_code));
+  id.major = static_cast<std::uint8_t>(number_or_zero(m.maj_rev));
+  id.minor = static_cast<std::uint8_t>(number_or_zero(m.min_rev));
+  id.serial = serial;
+  if (m.prod_name.ok()) id.product_name = std::string(m.prod_name.text);
+  id.state = 3;  // operational
+  id.sin_family = 2;
+  id.sin_port = cip::enip_port;
+  return id;
+}
+
+// Why the simulator cannot serve a planned connection; empty when it can
+// (`app_path` then holds its application path).
+std::string unserved_why(const model::device& dev, const connections::connection_plan& p, cip::bytes& app_path) {
+  const auto& c = *p.conn;
+  if (!c.decoded) return "its trigger/transport or parameters field is not a number";
+  if (!(c.tt.transport_classes & 0x2)) return "it is not a class 1 connection";
+  const auto* path = dev.path_of(c.path);
+  if (path == nullptr) return "it has no connection path";
+  if (auto why = connections::encode_connection_path(dev, *path, app_path)) return *why;
+  return {};
+}
+
+// One connection point per ConnectionN served, with the assemblies it names.
+void add_points(const model::device& dev, device& d) {
+  for (auto& p : connections::plan_connections(dev)) {
     connection_point cp;
-    cp.number = c.number;
-    if (!c.decoded) {
-      d.skipped.push_back({c.number, "its trigger/transport or parameters field is not a number"});
+    cp.number = p.conn->number;
+    if (auto why = unserved_why(dev, p, cp.app_path); !why.empty()) {
+      d.skipped.push_back({cp.number, std::move(why)});
       continue;
     }
-    if (!(c.tt.transport_classes & 0x2)) {
-      d.skipped.push_back({c.number, "it is not a class 1 connection"});
-      continue;
-    }
-    const auto* path = dev.path_of(c.path);
-    if (path == nullptr) {
-      d.skipped.push_back({c.number, "it has no connection path"});
-      continue;
-    }
-    if (auto why = live::encode_connection_path(dev, *path, cp.app_path)) {
-      d.skipped.push_back({c.number, *why});
-      continue;
-    }
-    cp.kind = p.listen_only                               ? point_kind::listen_only
-              : c.tt.input_only && !c.tt.exclusive_owner ? point_kind::input_only
-                                                         : point_kind::exclusive_owner;
+    cp.kind = p.kind.type;
     const auto& f = p.facts;
     add_assembly(d, f.input_instance, f.input_size, assembly_role::input);
     add_assembly(d, f.output_instance, f.output_size, assembly_role::output);
@@ -128,7 +129,15 @@ device build_device(const model::device& dev, std::uint32_t serial) {
     auto segs = cip::decode_path(cp.app_path, 0);
     if (segs) cp.segments = segs.value();
   }
-  for (const auto& t : live::plan_assemblies(dev)) add_assembly(d, t.instance, t.eds_size.value_or(0), assembly_role::other);
+}
+
+}  // namespace
+
+device build_device(const model::device& dev, std::uint32_t serial) {
+  device d;
+  d.id = identity_of(dev.identity, serial);
+  add_points(dev, d);
+  for (const auto& t : connections::plan_assemblies(dev)) add_assembly(d, t.instance, t.eds_size.value_or(0), assembly_role::other);
   std::sort(d.assemblies.begin(), d.assemblies.end(),
             [](const auto& a, const auto& b) { return a.instance < b.instance; });
   add_parameters(dev, d);

@@ -3,14 +3,14 @@
 // identity from [Device], its assembly instances, and one connection point
 // per ConnectionN it can serve (paths, sizes and formats from the same
 // collector `edsc header` and `verify --live` use). No second model of the
-// EDS: every number here comes from model::device through live::plan_connections.
+// EDS: every number here comes from model::device through connections::plan_connections.
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "cip/encap.hpp"
 #include "cip/request.hpp"
-#include "live/plan.hpp"
+#include "connections/plan.hpp"
 #include "model/device.hpp"
 #include "schema/cip_types.hpp"
 
@@ -36,8 +36,6 @@ struct assembly_instance {
   std::vector<input_field> fields;
 };
 
-enum class point_kind : std::uint8_t { exclusive_owner, input_only, listen_only };
-
 // Any RPI from 0.1 ms to 10 s: what a field that sets no limit (empty, or a
 // fixed number, which is the default a tool proposes) leaves a scanner.
 inline constexpr std::uint32_t default_rpi_min_us = 100, default_rpi_max_us = 10'000'000;
@@ -52,10 +50,10 @@ struct rpi_limits {
 // One ConnectionN the simulator accepts Forward_Open for.
 struct connection_point {
   std::uint32_t number = 0;  // N of ConnectionN
-  live::connection_plan plan;
+  connections::connection_plan plan;
   cip::bytes app_path;                      // owns what `segments` views
   std::vector<cip::path_segment> segments;  // the application path, widths forgotten
-  point_kind kind = point_kind::exclusive_owner;
+  model::app_type kind = model::app_type::exclusive_owner;  // as the plan classifies it
   rpi_limits ot_rpi, to_rpi;
 };
 
@@ -101,6 +99,7 @@ struct device {
   eds_file file;
 
   [[nodiscard]] parameter_instance* param(std::uint32_t number);
+  [[nodiscard]] const parameter_instance* param(std::uint32_t number) const;
 
   [[nodiscard]] assembly_instance* assembly(std::uint32_t instance);
   [[nodiscard]] const assembly_instance* assembly(std::uint32_t instance) const;

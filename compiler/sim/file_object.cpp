@@ -28,6 +28,7 @@
 #include "cip/device_reply.hpp"
 #include "cip/file_transfer.hpp"
 #include "cip/message.hpp"
+#include "sim/object_table.hpp"
 #include "sim/objects.hpp"
 
 namespace edsc::sim {
@@ -54,22 +55,23 @@ std::uint8_t file_state(const state& s) {
   return s.upload.offset == 0 ? state_upload_initiated : state_upload_in_progress;
 }
 
-bytes get_attribute(const state& s, const cip::request& q, std::uint32_t attr) {
-  const auto& f = s.dev.file;
-  bytes d;
-  switch (attr) {
-    case 1: cip::put_u8(d, file_state(s)); break;
-    case 2: put_stringi(d, "EDS and Icon Files"); break;
-    case 3: cip::put_u16(d, 1); break;
-    case 4: put_stringi(d, f.name); break;
-    case 5: cip::put_u8(d, f.major); cip::put_u8(d, f.minor); break;
-    case 6: cip::put_u32(d, static_cast<std::uint32_t>(f.content.size())); break;
-    case 7: cip::put_u16(d, cip::file_checksum(f.content)); break;
-    case 10: cip::put_u8(d, 1); break;  // read only
-    case 11: cip::put_u8(d, 0); break;  // binary, not compressed
-    default: return cip::encode_reply(q.service, general::attribute_not_supported);
-  }
-  return cip::encode_reply(q.service, general::success, {}, d);
+// An attribute of the one instance.
+attribute file_attr(std::uint32_t number, void (*put)(const state&, bytes&)) {
+  return {number, [put](const state& s, std::uint32_t, bytes& d) { put(s, d); }};
+}
+
+std::vector<attribute> instance_attributes() {
+  return {
+      file_attr(1, [](const state& s, bytes& d) { cip::put_u8(d, file_state(s)); }),
+      file_attr(2, [](const state&, bytes& d) { put_stringi(d, "EDS and Icon Files"); }),
+      file_attr(3, [](const state&, bytes& d) { cip::put_u16(d, 1); }),
+      file_attr(4, [](const state& s, bytes& d) { put_stringi(d, s.dev.file.name); }),
+      file_attr(5, [](const state& s, bytes& d) { cip::put_u8(d, s.dev.file.major), cip::put_u8(d, s.dev.file.minor); }),
+      file_attr(6, [](const state& s, bytes& d) { cip::put_u32(d, static_cast<std::uint32_t>(s.dev.file.content.size())); }),
+      file_attr(7, [](const state& s, bytes& d) { cip::put_u16(d, cip::file_checksum(s.dev.file.content)); }),
+      file_attr(10, [](const state&, bytes& d) { cip::put_u8(d, 1); }),  // read only
+      file_attr(11, [](const state&, bytes& d) { cip::put_u8(d, 0); }),  // binary, not compressed
+  };
 }
 
 // The packet that starts at `from` under transfer number `number`.
@@ -101,38 +103,29 @@ bytes transfer(state& s, const cip::request& q) {
   return reply;
 }
 
+bytes initiate(state& s, const cip::request& q) {
+  if (q.data.empty()) return cip::encode_reply(q.service, general::not_enough_data);
+  if (q.data.size() > 1) return cip::encode_reply(q.service, general::too_much_data);
+  if (q.data[0] == 0) return cip::encode_reply(q.service, general::invalid_parameter);
+  s.upload = file_upload{true, false, q.data[0], 0, 0, 0};  // a new upload restarts one left unfinished
+  const auto d = cip::encode_upload_offer({static_cast<std::uint32_t>(s.dev.file.content.size()), s.upload.transfer_size});
+  return cip::encode_reply(q.service, general::success, {}, d);
+}
+
 }  // namespace
 
-bytes file_object(state& s, const cip::request& q, const cip::object_address& a) {
-  if (s.dev.file.content.empty()) return cip::encode_reply(q.service, general::path_destination_unknown);
-  if (a.instance == 0) {  // class attributes: revision 1, max instance and number of instances
-    if (q.service != cip::service::get_attribute_single || !a.attribute) return cip::encode_reply(q.service, general::service_not_supported);
-    bytes d;
-    if (*a.attribute == 1 || *a.attribute == 3) cip::put_u16(d, 1);
-    else if (*a.attribute == 2) cip::put_u16(d, cip::eds_file_instance);
-    else return cip::encode_reply(q.service, general::attribute_not_supported);
-    return cip::encode_reply(q.service, general::success, {}, d);
-  }
-  if (a.instance != cip::eds_file_instance) return cip::encode_reply(q.service, general::object_does_not_exist);
-  switch (q.service) {
-    case cip::service::get_attribute_single:
-      if (!a.attribute) return cip::encode_reply(q.service, general::service_not_supported);
-      return get_attribute(s, q, *a.attribute);
-    case cip::service::set_attribute_single:
-      if (!a.attribute) return cip::encode_reply(q.service, general::service_not_supported);
-      return cip::encode_reply(q.service, get_attribute(s, q, *a.attribute)[2] == 0 ? general::attribute_not_settable
-                                                                                     : general::attribute_not_supported);
-    case cip::service::initiate_upload: {
-      if (q.data.empty()) return cip::encode_reply(q.service, general::not_enough_data);
-      if (q.data.size() > 1) return cip::encode_reply(q.service, general::too_much_data);
-      if (q.data[0] == 0) return cip::encode_reply(q.service, general::invalid_parameter);
-      s.upload = file_upload{true, false, q.data[0], 0, 0, 0};  // a new upload restarts one left unfinished
-      const auto d = cip::encode_upload_offer({static_cast<std::uint32_t>(s.dev.file.content.size()), s.upload.transfer_size});
-      return cip::encode_reply(q.service, general::success, {}, d);
-    }
-    case cip::service::upload_transfer: return transfer(s, q);
-    default: return cip::encode_reply(q.service, general::service_not_supported);
-  }
+object_table file_table() {
+  object_table t;
+  t.class_id = cip::code(cip::class_id::file);
+  t.present = [](const state& s) { return !s.dev.file.content.empty(); };
+  // Revision 1, max instance, number of instances.
+  t.class_level = attribute_level{{constant_u16(1, 1), constant_u16(2, cip::eds_file_instance), constant_u16(3, 1)}};
+  t.exists = [](const state&, std::uint32_t i) { return i == cip::eds_file_instance; };
+  t.missing = general::object_does_not_exist;
+  t.instance_level = {instance_attributes(), false, true};  // every attribute read only
+  t.services = {{cip::service::initiate_upload, [](object_call& c) { return initiate(c.s, c.q); }},
+                {cip::service::upload_transfer, [](object_call& c) { return transfer(c.s, c.q); }}};
+  return t;
 }
 
 }  // namespace edsc::sim

@@ -56,7 +56,7 @@ std::string triggers_allowed(const model::trigger_transport& tt) {
 
 bool owner_producing(const state& s, std::uint32_t input_instance) {
   for (const auto& c : s.connections)
-    if (c.point && s.dev.points[*c.point].kind != point_kind::listen_only &&
+    if (c.point && s.dev.points[*c.point].kind != model::app_type::listen_only &&
         s.dev.points[*c.point].plan.facts.input_instance == input_instance)
       return true;
   return false;
@@ -72,7 +72,7 @@ std::optional<refusal> check_size(const char* dir, cip::extended_status status, 
   if (asked.type == cip::conn_type::null) return std::nullopt;
   if (asked.variable && !variable_ok)
     return refusal{ext::invalid_connection_size, {}, fmt::format("{} variable size asked; Connection{} allows only fixed", dir, number)};
-  const auto want = live::network_size(data, run_idle);
+  const auto want = connections::network_size(data, run_idle);
   if (asked.variable ? asked.size <= want : asked.size == want) return std::nullopt;
   return refusal{status, {want},
                  fmt::format("{} {}size {} asked; Connection{} serves {}{} ({})", dir, asked.variable ? "variable " : "",
@@ -143,15 +143,15 @@ std::optional<refusal> check_point(const state& s, const connection_point& p, co
   if (s.connections.size() >= s.max_connections)
     return refusal{ext::out_of_connections, {},
                    fmt::format("{} connections are open, the most the simulator holds", s.connections.size())};
-  if (p.kind == point_kind::exclusive_owner)
+  if (p.kind == model::app_type::exclusive_owner)
     for (const auto& o : s.connections)
-      if (o.point && s.dev.points[*o.point].kind == point_kind::exclusive_owner &&
+      if (o.point && s.dev.points[*o.point].kind == model::app_type::exclusive_owner &&
           s.dev.points[*o.point].plan.facts.output_instance == f.output_instance)
         return refusal{ext::ownership_conflict, {},
                        fmt::format("output assembly {} is owned by the connection of serial {}, originator vendor {} "
                                    "and serial {}",
                                    f.output_instance, o.serial, o.vendor, o.originator_serial)};
-  if (p.kind == point_kind::listen_only && !owner_producing(s, f.input_instance))
+  if (p.kind == model::app_type::listen_only && !owner_producing(s, f.input_instance))
     return refusal{ext::non_listen_only_not_opened, {},
                    fmt::format("Connection{} listens to input assembly {}, which no open connection produces", p.number,
                                f.input_instance)};

@@ -12,8 +12,8 @@
 #include <fmt/format.h>
 
 #include "base/plural.hpp"
+#include "connections/plan.hpp"
 #include "facts/header_parts.hpp"
-#include "live/plan.hpp"
 
 namespace edsc::sim {
 
@@ -45,7 +45,7 @@ void put_bits(cip::bytes& data, std::uint32_t at, std::uint32_t bits, std::uint6
 }  // namespace
 
 void add_fields(const model::device& dev, device& d) {
-  for (const auto& t : live::plan_assemblies(dev)) {
+  for (const auto& t : connections::plan_assemblies(dev)) {
     auto* a = d.assembly(t.instance);
     if (a == nullptr || !a->fields.empty()) continue;
     a->eds_number = t.assem->number;

@@ -55,13 +55,13 @@ void close_unsendable(state& s, const std::vector<std::uint32_t>& to_ids) {
 void close_orphans(state& s) {
   auto has_owner = [&](std::uint32_t input) {
     for (const auto& c : s.connections)
-      if (c.point && s.dev.points[*c.point].kind != point_kind::listen_only &&
+      if (c.point && s.dev.points[*c.point].kind != model::app_type::listen_only &&
           s.dev.points[*c.point].plan.facts.input_instance == input)
         return true;
     return false;
   };
   std::erase_if(s.connections, [&](const open_connection& c) {
-    if (!c.point || s.dev.points[*c.point].kind != point_kind::listen_only) return false;
+    if (!c.point || s.dev.points[*c.point].kind != model::app_type::listen_only) return false;
     if (has_owner(s.dev.points[*c.point].plan.facts.input_instance)) return false;
     log_event(s, "close", fmt::format("\"serial\":{},\"originator_vendor\":{},\"originator_serial\":{},"
                                       "\"why\":\"its owner closed\"",

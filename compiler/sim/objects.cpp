@@ -1,12 +1,24 @@
-// Explicit requests: the path read, then the Identity object (class 1) from
-// [Device] and the Assembly object (class 4) with the EDS's sizes; the
-// Connection Manager (class 6), the Parameter object (0x0F) and the File
-// object (0x37) have files of their own.
+// Explicit requests: the path read, then the object its class names, served
+// from the object's table (object_table.hpp) by the generic Get/Set code.
+//
+// How to add an object: write a function returning its object_table (class
+// id; whether the device has it; class attributes; which instances exist
+// and the status when one does not; instance attributes with their encoder,
+// and for a settable one its length and a setter that checks the limits;
+// other services) and list it in `registry()` below. A small object is
+// written whole in this file, like Identity and Assembly; the Connection
+// Manager (connection_manager.cpp), Parameter (parameter_object.cpp) and
+// File (file_object.cpp) objects keep their longer code in files of their
+// own and are declared in objects.hpp. Replies are the generic ones: an
+// unknown attribute is attribute_not_supported, a set of a read-only one
+// attribute_not_settable, a service the table does not list
+// service_not_supported.
 #include "sim/objects.hpp"
 
 #include <fmt/format.h>
 
 #include "cip/device_reply.hpp"
+#include "sim/object_table.hpp"
 
 namespace edsc::sim {
 
@@ -14,75 +26,83 @@ namespace {
 
 using cip::bytes;
 
-bytes identity_object(const state& s, const cip::request& q, const cip::object_address& a) {
-  if (a.instance == 0) {  // class attributes: revision 1, max instance 1
-    if (q.service != cip::service::get_attribute_single || !a.attribute) return cip::encode_reply(q.service, general::service_not_supported);
-    bytes d;
-    if (*a.attribute == 1 || *a.attribute == 2) cip::put_u16(d, 1);
-    else return cip::encode_reply(q.service, general::attribute_not_supported);
-    return cip::encode_reply(q.service, general::success, {}, d);
-  }
-  if (a.instance != 1) return cip::encode_reply(q.service, general::path_destination_unknown);
+cip::identity identity_now(const state& s) {
   auto id = s.dev.id;
   id.status = device_status(s);
-  if (q.service == cip::service::get_attributes_all) {
-    bytes d;
-    cip::put_identity_fields(d, id);
-    return cip::encode_reply(q.service, general::success, {}, d);
-  }
-  if (!a.attribute) return cip::encode_reply(q.service, general::service_not_supported);
-  const auto attr = *a.attribute;
-  if (q.service == cip::service::set_attribute_single)
-    return cip::encode_reply(q.service, attr >= 1 && attr <= 8 ? general::attribute_not_settable : general::attribute_not_supported);
-  if (q.service != cip::service::get_attribute_single) return cip::encode_reply(q.service, general::service_not_supported);
-  bytes all;
-  cip::put_identity_fields(all, id);
-  bytes d;
-  switch (attr) {
-    case 1: cip::put_u16(d, id.vendor); break;
-    case 2: cip::put_u16(d, id.device_type); break;
-    case 3: cip::put_u16(d, id.product_code); break;
-    case 4: cip::put_u8(d, id.major); cip::put_u8(d, id.minor); break;
-    case 5: cip::put_u16(d, id.status); break;
-    case 6: cip::put_u32(d, id.serial); break;
-    case 7: d.assign(all.begin() + 14, all.end()); break;  // the SHORT_STRING after the 14 fixed bytes
-    case 8: cip::put_u8(d, id.state); break;
-    default: return cip::encode_reply(q.service, general::attribute_not_supported);
-  }
-  return cip::encode_reply(q.service, general::success, {}, d);
+  return id;
 }
 
-bytes assembly_object(state& s, const cip::request& q, const cip::object_address& a) {
-  if (a.instance == 0) {  // class attributes: revision 2, max instance
-    if (q.service != cip::service::get_attribute_single || !a.attribute) return cip::encode_reply(q.service, general::service_not_supported);
-    bytes d;
-    if (*a.attribute == 1) cip::put_u16(d, 2);
-    else if (*a.attribute == 2) cip::put_u16(d, static_cast<std::uint16_t>(s.dev.assemblies.empty() ? 0 : s.dev.assemblies.back().instance));
-    else return cip::encode_reply(q.service, general::attribute_not_supported);
-    return cip::encode_reply(q.service, general::success, {}, d);
-  }
-  auto* as = s.dev.assembly(a.instance);
-  if (as == nullptr) return cip::encode_reply(q.service, general::path_destination_unknown);
-  if (!a.attribute) return cip::encode_reply(q.service, general::service_not_supported);
-  const auto attr = *a.attribute;
-  if (q.service == cip::service::get_attribute_single) {
-    bytes d;
-    if (attr == 3) d = as->data;
-    else if (attr == 4) cip::put_u16(d, static_cast<std::uint16_t>(as->data.size()));
-    else return cip::encode_reply(q.service, general::attribute_not_supported);
-    return cip::encode_reply(q.service, general::success, {}, d);
-  }
-  if (q.service != cip::service::set_attribute_single) return cip::encode_reply(q.service, general::service_not_supported);
-  if (attr == 4) return cip::encode_reply(q.service, general::attribute_not_settable);
-  if (attr != 3) return cip::encode_reply(q.service, general::attribute_not_supported);
-  // Inputs are what the device produces: a scanner does not write them.
-  if (as->role == assembly_role::input) return cip::encode_reply(q.service, general::attribute_not_settable);
-  if (q.data.size() < as->data.size()) return cip::encode_reply(q.service, general::not_enough_data);
-  if (q.data.size() > as->data.size()) return cip::encode_reply(q.service, general::too_much_data);
-  as->data.assign(q.data.begin(), q.data.end());
-  log_event(s, as->role == assembly_role::config ? "config" : "output",
-            fmt::format("\"instance\":{},\"by\":\"Set_Attribute_Single\",\"data\":\"{}\"", as->instance, hex(as->data)));
-  return cip::encode_reply(q.service, general::success);
+// Identity attribute `fn` of the identity as it is now.
+attribute identity_attr(std::uint32_t number, void (*put)(const cip::identity&, bytes&), bool in_all = true) {
+  return {number, [put](const state& s, std::uint32_t, bytes& d) { put(identity_now(s), d); }, in_all};
+}
+
+// Class 1 from [Device]: one instance; Get_Attribute_All is attributes 1 to 7.
+object_table identity_table() {
+  object_table t;
+  t.class_id = cip::code(cip::class_id::identity);
+  t.class_level = attribute_level{{constant_u16(1, 1), constant_u16(2, 1)}};  // revision 1, max instance 1
+  t.exists = [](const state&, std::uint32_t i) { return i == 1; };
+  t.instance_level.get_all = t.instance_level.set = true;
+  t.instance_level.attributes = {
+      identity_attr(1, [](const cip::identity& id, bytes& d) { cip::put_u16(d, id.vendor); }),
+      identity_attr(2, [](const cip::identity& id, bytes& d) { cip::put_u16(d, id.device_type); }),
+      identity_attr(3, [](const cip::identity& id, bytes& d) { cip::put_u16(d, id.product_code); }),
+      identity_attr(4, [](const cip::identity& id, bytes& d) { cip::put_u8(d, id.major), cip::put_u8(d, id.minor); }),
+      identity_attr(5, [](const cip::identity& id, bytes& d) { cip::put_u16(d, id.status); }),
+      identity_attr(6, [](const cip::identity& id, bytes& d) { cip::put_u32(d, id.serial); }),
+      identity_attr(7,
+                    [](const cip::identity& id, bytes& d) {  // the SHORT_STRING after the 14 fixed bytes
+                      bytes all;
+                      cip::put_identity_fields(all, id);
+                      d.insert(d.end(), all.begin() + 14, all.end());
+                    }),
+      identity_attr(8, [](const cip::identity& id, bytes& d) { cip::put_u8(d, id.state); }, false),
+  };
+  return t;
+}
+
+const assembly_instance& assembly_at(const state& s, std::uint32_t instance) { return *s.dev.assembly(instance); }
+
+// Attribute 3 written by a scanner: outputs and configuration; inputs are what the device produces.
+cip::general_status set_assembly_data(state& s, std::uint32_t instance, cip::byte_view data) {
+  auto& as = *s.dev.assembly(instance);
+  as.data.assign(data.begin(), data.end());
+  log_event(s, as.role == assembly_role::config ? "config" : "output",
+            fmt::format("\"instance\":{},\"by\":\"Set_Attribute_Single\",\"data\":\"{}\"", as.instance, hex(as.data)));
+  return cip::general_status::success;
+}
+
+// Class 4: one instance per assembly the EDS names, of the EDS's size; 3 data, 4 its size.
+object_table assembly_table() {
+  object_table t;
+  t.class_id = cip::code(cip::class_id::assembly);
+  t.class_level = attribute_level{{constant_u16(1, 2),  // revision 2, max instance
+                                   {2, [](const state& s, std::uint32_t, bytes& d) {
+                                      const auto& as = s.dev.assemblies;
+                                      cip::put_u16(d, static_cast<std::uint16_t>(as.empty() ? 0 : as.back().instance));
+                                    }}}};
+  t.exists = [](const state& s, std::uint32_t i) { return s.dev.assembly(i) != nullptr; };
+  t.instance_level.set = true;
+  attribute data{3, [](const state& s, std::uint32_t i, bytes& d) {
+                   const auto& v = assembly_at(s, i).data;
+                   d.insert(d.end(), v.begin(), v.end());
+                 }};
+  data.set = set_assembly_data;
+  data.settable = [](const state& s, std::uint32_t i) { return assembly_at(s, i).role != assembly_role::input; };
+  data.size = [](const state& s, std::uint32_t i) { return assembly_at(s, i).data.size(); };
+  t.instance_level.attributes = {
+      std::move(data),
+      {4, [](const state& s, std::uint32_t i, bytes& d) { cip::put_u16(d, static_cast<std::uint16_t>(assembly_at(s, i).data.size())); }},
+  };
+  return t;
+}
+
+// Every object the simulator serves.
+const std::vector<object_table>& registry() {
+  static const std::vector<object_table> objects{identity_table(), assembly_table(), connection_manager_table(),
+                                                 parameter_table(), file_table()};
+  return objects;
 }
 
 }  // namespace
@@ -109,15 +129,10 @@ bytes handle_cip(state& s, const link& l, cip::byte_view request, clock::time_po
   if (!segs) return cip::encode_reply(q->service, general::path_segment_error);
   const auto a = cip::address_of(segs.value());
   if (!a) return cip::encode_reply(q->service, general::path_segment_error);
-  using cls = cip::class_id;
-  switch (static_cast<cls>(a->class_id)) {
-    case cls::identity: return identity_object(s, q.value(), *a);
-    case cls::assembly: return assembly_object(s, q.value(), *a);
-    case cls::connection_manager: return connection_manager(s, l, q.value(), *a, now);
-    case cls::parameter: return parameter_object(s, q.value(), *a);
-    case cls::file: return file_object(s, q.value(), *a);
-    default: return cip::encode_reply(q->service, general::path_destination_unknown);
-  }
+  object_call c{s, l, q.value(), *a, now};
+  for (const auto& t : registry())
+    if (t.class_id == a->class_id) return serve(t, c);
+  return cip::encode_reply(q->service, general::path_destination_unknown);
 }
 
 }  // namespace edsc::sim

@@ -11,12 +11,13 @@ namespace edsc::sim {
 
 using general = cip::general_status;
 
-[[nodiscard]] cip::bytes connection_manager(state& s, const link& l, const cip::request& q,
-                                            const cip::object_address& a, clock::time_point now);
+struct object_table;
+// Class 6, Forward_Open, Large_Forward_Open and Forward_Close (connection_manager.cpp).
+[[nodiscard]] object_table connection_manager_table();
 // Class 0x0F from [Params] (parameter_object.cpp).
-[[nodiscard]] cip::bytes parameter_object(state& s, const cip::request& q, const cip::object_address& a);
+[[nodiscard]] object_table parameter_table();
 // Class 0x37, the EDS itself as instance 0xC8 (file_object.cpp).
-[[nodiscard]] cip::bytes file_object(state& s, const cip::request& q, const cip::object_address& a);
+[[nodiscard]] object_table file_table();
 // Closes listen-only connections whose owner is gone.
 void close_orphans(state& s);
 // A JSON line {"event": what, ...fields}; `fields` is the inside of an object, may be empty.

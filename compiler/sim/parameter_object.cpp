@@ -16,6 +16,7 @@
 
 #include "cip/device_reply.hpp"
 #include "cip/message.hpp"
+#include "sim/object_table.hpp"
 #include "sim/objects.hpp"
 #include "base/utf8.hpp"
 
@@ -155,7 +156,7 @@ parameter_instance make_instance(const model::device& dev, const model::param& p
     pi.read_only = true;
   }
   pi.value = pi.def;
-  if (const auto* path = dev.path_of(p.link_path); path != nullptr && live::encode_connection_path(dev, *path, pi.link_path))
+  if (const auto* path = dev.path_of(p.link_path); path != nullptr && connections::encode_connection_path(dev, *path, pi.link_path))
     pi.link_path.clear();  // a path the device cannot write out ([ParamN] in it): none
   pi.multiplier = number_or<std::uint16_t>(p.scaling_multiplier, 1);
   pi.divisor = number_or<std::uint16_t>(p.scaling_divisor, 1);
@@ -169,64 +170,68 @@ parameter_instance make_instance(const model::device& dev, const model::param& p
   return pi;
 }
 
-// Instance attribute `attr` into `d`; false when there is no such attribute.
-bool put_attribute(bytes& d, const parameter_instance& p, std::uint32_t attr) {
-  switch (attr) {
-    case 1: d.insert(d.end(), p.value.begin(), p.value.end()); return true;
-    case 2: cip::put_u8(d, static_cast<std::uint8_t>(p.link_path.size())); return true;
-    case 3: d.insert(d.end(), p.link_path.begin(), p.link_path.end()); return true;
-    case 4: cip::put_u16(d, p.descriptor); return true;
-    case 5: cip::put_u8(d, p.data_type); return true;
-    case 6: cip::put_u8(d, p.data_size); return true;
-    case 7: put_short_string(d, p.name); return true;
-    case 8: put_short_string(d, p.units); return true;
-    case 9: put_short_string(d, p.help); return true;
-    case 10: d.insert(d.end(), p.min.begin(), p.min.end()); return true;
-    case 11: d.insert(d.end(), p.max.begin(), p.max.end()); return true;
-    case 12: d.insert(d.end(), p.def.begin(), p.def.end()); return true;
-    case 13: cip::put_u16(d, p.multiplier); return true;
-    case 14: cip::put_u16(d, p.divisor); return true;
-    case 15: cip::put_u16(d, p.base); return true;
-    case 16: cip::put_u16(d, p.offset); return true;
-    case 17: case 18: case 19: case 20: cip::put_u16(d, p.links[attr - 17]); return true;
-    case 21: cip::put_u8(d, p.precision); return true;
-    default: return false;
-  }
+const parameter_instance& param_at(const state& s, std::uint32_t instance) {
+  return *s.dev.param(instance);
 }
 
-bytes set_value(state& s, const cip::request& q, parameter_instance& p) {
-  if (p.read_only || p.type == nullptr) return cip::encode_reply(q.service, general::attribute_not_settable);
-  if (q.data.size() < p.type->size) return cip::encode_reply(q.service, general::not_enough_data);
-  if (q.data.size() > p.type->size) return cip::encode_reply(q.service, general::too_much_data);
+void put_bytes(bytes& d, const bytes& v) { d.insert(d.end(), v.begin(), v.end()); }
+
+// An instance attribute read through `put` from the instance.
+attribute param_attr(std::uint32_t number, void (*put)(const parameter_instance&, bytes&)) {
+  return {number, [put](const state& s, std::uint32_t i, bytes& d) { put(param_at(s, i), d); }};
+}
+
+// Attribute 1 written: in the type's range, and one of the enumerated values when there are.
+cip::general_status set_value(state& s, std::uint32_t instance, cip::byte_view data) {
+  auto& p = *s.dev.param(instance);
   const auto& t = *p.type;
-  const bool in_range = compare(t, q.data, p.min) >= 0 && compare(t, q.data, p.max) <= 0;
+  const bool in_range = compare(t, data, p.min) >= 0 && compare(t, data, p.max) <= 0;
   const bool listed = p.allowed.empty() || std::any_of(p.allowed.begin(), p.allowed.end(), [&](const bytes& v) {
-                        return compare(t, q.data, v) == 0;
+                        return compare(t, data, v) == 0;
                       });
-  if (!in_range || !listed) return cip::encode_reply(q.service, general::invalid_attribute_value);
-  p.value.assign(q.data.begin(), q.data.end());
+  if (!in_range || !listed) return general::invalid_attribute_value;
+  p.value.assign(data.begin(), data.end());
   log_event(s, "parameter", fmt::format("\"instance\":{},\"data\":\"{}\"", p.number, hex(p.value)));
-  return cip::encode_reply(q.service, general::success);
+  return general::success;
 }
 
-bytes class_attributes(const state& s, const cip::request& q, const cip::object_address& a) {
-  if (!a.attribute) return cip::encode_reply(q.service, general::service_not_supported);
-  const auto attr = *a.attribute;
-  const bool known = attr == 1 || attr == 2 || attr == 3 || attr == 8 || attr == 9 || attr == 10;
-  if (q.service == cip::service::set_attribute_single)
-    return cip::encode_reply(q.service, known ? general::attribute_not_settable : general::attribute_not_supported);
-  if (q.service != cip::service::get_attribute_single) return cip::encode_reply(q.service, general::service_not_supported);
-  bytes d;
-  switch (attr) {
-    case 1: cip::put_u16(d, 1); break;
-    case 2: cip::put_u16(d, static_cast<std::uint16_t>(s.dev.params.back().number)); break;
-    case 3: cip::put_u16(d, static_cast<std::uint16_t>(s.dev.params.size())); break;
-    case 8: cip::put_u16(d, s.dev.param_class_descriptor); break;
-    case 9: cip::put_u16(d, s.dev.cfg_assembly); break;
-    case 10: cip::put_u8(d, 0); break;  // English
-    default: return cip::encode_reply(q.service, general::attribute_not_supported);
-  }
-  return cip::encode_reply(q.service, general::success, {}, d);
+attribute value_attr() {
+  auto a = param_attr(1, [](const parameter_instance& p, bytes& d) { put_bytes(d, p.value); });
+  a.set = set_value;
+  a.settable = [](const state& s, std::uint32_t i) { return !param_at(s, i).read_only && param_at(s, i).type != nullptr; };
+  a.size = [](const state& s, std::uint32_t i) -> std::size_t { return param_at(s, i).type->size; };
+  return a;
+}
+
+// Attributes 1 to 21 (Get_Attribute_All returns them in order); only the value is settable.
+std::vector<attribute> instance_attributes() {
+  using p_ = const parameter_instance&;
+  std::vector<attribute> v{
+      value_attr(),
+      param_attr(2, [](p_ p, bytes& d) { cip::put_u8(d, static_cast<std::uint8_t>(p.link_path.size())); }),
+      param_attr(3, [](p_ p, bytes& d) { put_bytes(d, p.link_path); }),
+      param_attr(4, [](p_ p, bytes& d) { cip::put_u16(d, p.descriptor); }),
+      param_attr(5, [](p_ p, bytes& d) { cip::put_u8(d, p.data_type); }),
+      param_attr(6, [](p_ p, bytes& d) { cip::put_u8(d, p.data_size); }),
+      param_attr(7, [](p_ p, bytes& d) { put_short_string(d, p.name); }),
+      param_attr(8, [](p_ p, bytes& d) { put_short_string(d, p.units); }),
+      param_attr(9, [](p_ p, bytes& d) { put_short_string(d, p.help); }),
+      param_attr(10, [](p_ p, bytes& d) { put_bytes(d, p.min); }),
+      param_attr(11, [](p_ p, bytes& d) { put_bytes(d, p.max); }),
+      param_attr(12, [](p_ p, bytes& d) { put_bytes(d, p.def); }),
+      param_attr(13, [](p_ p, bytes& d) { cip::put_u16(d, p.multiplier); }),
+      param_attr(14, [](p_ p, bytes& d) { cip::put_u16(d, p.divisor); }),
+      param_attr(15, [](p_ p, bytes& d) { cip::put_u16(d, p.base); }),
+      param_attr(16, [](p_ p, bytes& d) { cip::put_u16(d, p.offset); }),
+  };
+  for (std::uint32_t n = 17; n <= 20; ++n)  // the scaling links
+    v.push_back({n, [n](const state& s, std::uint32_t i, bytes& d) { cip::put_u16(d, param_at(s, i).links[n - 17]); }});
+  v.push_back(param_attr(21, [](p_ p, bytes& d) { cip::put_u8(d, p.precision); }));
+  return v;
+}
+
+attribute class_u16(std::uint32_t number, std::uint16_t (*of)(const device&)) {
+  return {number, [of](const state& s, std::uint32_t, bytes& d) { cip::put_u16(d, of(s.dev)); }};
 }
 
 }  // namespace
@@ -246,28 +251,25 @@ parameter_instance* device::param(std::uint32_t number) {
   auto it = std::lower_bound(params.begin(), params.end(), number, [](const auto& p, std::uint32_t n) { return p.number < n; });
   return it != params.end() && it->number == number ? &*it : nullptr;
 }
+const parameter_instance* device::param(std::uint32_t number) const { return const_cast<device*>(this)->param(number); }
 
-bytes parameter_object(state& s, const cip::request& q, const cip::object_address& a) {
-  if (s.dev.params.empty()) return cip::encode_reply(q.service, general::path_destination_unknown);
-  if (a.instance == 0) return class_attributes(s, q, a);
-  auto* p = s.dev.param(a.instance);
-  if (p == nullptr) return cip::encode_reply(q.service, general::object_does_not_exist);
-  if (q.service == cip::service::get_attributes_all) {
-    bytes d;  // attributes 1 to 21 in order
-    for (std::uint32_t i = 1; i <= 21; ++i) (void)put_attribute(d, *p, i);
-    return cip::encode_reply(q.service, general::success, {}, d);
-  }
-  if (q.service != cip::service::get_attribute_single && q.service != cip::service::set_attribute_single)
-    return cip::encode_reply(q.service, general::service_not_supported);
-  if (!a.attribute) return cip::encode_reply(q.service, general::service_not_supported);
-  const auto attr = *a.attribute;
-  if (q.service == cip::service::set_attribute_single) {
-    if (attr == 1) return set_value(s, q, *p);
-    return cip::encode_reply(q.service, attr >= 2 && attr <= 21 ? general::attribute_not_settable : general::attribute_not_supported);
-  }
-  bytes d;
-  if (!put_attribute(d, *p, attr)) return cip::encode_reply(q.service, general::attribute_not_supported);
-  return cip::encode_reply(q.service, general::success, {}, d);
+object_table parameter_table() {
+  object_table t;
+  t.class_id = cip::code(cip::class_id::parameter);
+  t.present = [](const state& s) { return !s.dev.params.empty(); };
+  t.class_level = attribute_level{{
+                                      constant_u16(1, 1),  // revision
+                                      class_u16(2, [](const device& d) { return static_cast<std::uint16_t>(d.params.back().number); }),
+                                      class_u16(3, [](const device& d) { return static_cast<std::uint16_t>(d.params.size()); }),
+                                      class_u16(8, [](const device& d) { return d.param_class_descriptor; }),
+                                      class_u16(9, [](const device& d) { return d.cfg_assembly; }),
+                                      {10, [](const state&, std::uint32_t, bytes& d) { cip::put_u8(d, 0); }},  // English
+                                  },
+                                  false, true};
+  t.exists = [](const state& s, std::uint32_t i) { return s.dev.param(i) != nullptr; };
+  t.missing = general::object_does_not_exist;
+  t.instance_level = {instance_attributes(), true, true};
+  return t;
 }
 
 }  // namespace edsc::sim

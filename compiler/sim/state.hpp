@@ -76,7 +76,7 @@ struct state {
     if (!c.point) continue;  // class 3 is explicit messaging, not I/O
     io = true;
     run = run || c.run;
-    owned = owned || s.dev.points[*c.point].kind == point_kind::exclusive_owner;
+    owned = owned || s.dev.points[*c.point].kind == model::app_type::exclusive_owner;
   }
   using cip::device_state;
   const auto word = static_cast<std::uint16_t>(owned ? cip::code(cip::identity_bit::owned) : 0);

@@ -13,7 +13,7 @@
 namespace edsc::test {
 namespace {
 
-using emit::opener_point_kind;
+using model::app_type;
 
 // "instance:size:role" per planned assembly, in the plan's order.
 std::vector<std::string> assemblies(const emit::opener_plan& p) {
@@ -26,8 +26,8 @@ std::vector<std::string> assemblies(const emit::opener_plan& p) {
 std::vector<std::string> points(const emit::opener_plan& p) {
   std::vector<std::string> out;
   for (const auto& pt : p.points) {
-    const char* kind = pt.kind == opener_point_kind::exclusive_owner ? "owner"
-                       : pt.kind == opener_point_kind::input_only    ? "input-only"
+    const char* kind = pt.kind == model::app_type::exclusive_owner ? "owner"
+                       : pt.kind == model::app_type::input_only    ? "input-only"
                                                                      : "listen-only";
     out.push_back(fmt::format("{}#{} Connection{} {}/{}/{} {}", kind, pt.index, pt.connection, pt.output_instance,
                               pt.input_instance, pt.config_instance, pt.name));

@@ -172,7 +172,7 @@ TEST(OpenerRender, TheApplicationCreatesTheAssembliesAndConnectionPoints) {
 TEST(OpenerRender, AConnectionNameCannotEndItsComment) {
   emit::opener_plan p;
   p.assemblies.push_back({101, 4, "input"});
-  p.points.push_back({emit::opener_point_kind::exclusive_owner, 0, 7, "x */ y\tz", 150, 101, 151});
+  p.points.push_back({model::app_type::exclusive_owner, 0, 7, "x */ y\tz", 150, 101, 151});
   const auto text = file(emit::render_opener(p), "edsc_opener_app.c");
   EXPECT_LINE(text, "  ConfigureExclusiveOwnerConnectionPoint(0, 150, 101, 151);  /* Connection7 x * / y?z */");
 }

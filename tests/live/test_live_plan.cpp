@@ -1,4 +1,4 @@
-// The Forward_Open paths a scanner builds from the EDS (compiler/live/plan),
+// The Forward_Open paths a scanner builds from the EDS (compiler/connections/plan),
 // in the width the EDS wrote each segment, and the transport byte, against
 // bytes worked out by hand.
 #include <gtest/gtest.h>
@@ -7,11 +7,11 @@
 #include <sstream>
 
 #include "edit/analyze.hpp"
-#include "live/plan.hpp"
+#include "connections/plan.hpp"
 #include "netns/live_support.hpp"
 #include "test_paths.hpp"
 
-namespace edsc::live {
+namespace edsc::connections {
 namespace {
 
 using live_test::hex;
@@ -62,4 +62,4 @@ TEST(live_plan, the_trigger_is_bits_4_to_6_of_the_transport_byte) {
 }
 
 }  // namespace
-}  // namespace edsc::live
+}  // namespace edsc::connections

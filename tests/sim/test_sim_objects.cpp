@@ -207,5 +207,50 @@ TEST_F(sim_file, an_upload_through_the_encapsulation_returns_the_file_byte_for_b
   EXPECT_EQ(s_.log.back(), "{\"event\":\"uploaded\",\"instance\":200,\"size\":" + std::to_string(got.size()) + "}");
 }
 
+// The generic Get_Attribute_Single, Get_Attribute_All and
+// Set_Attribute_Single answer every object's table alike: an attribute the
+// table lacks is 0x14, a read-only one set is 0x0E, a service it does not
+// serve is 0x08, also for the class.
+struct generic_case {
+  std::uint32_t cls, instance, readable, read_only, unknown;
+  std::uint8_t class_set;  // Set_Attribute_Single of class attribute 1
+};
+
+TEST_F(sim_file, the_generic_services_answer_every_object_alike) {
+  assembly_instance in;  // an input assembly: data (3) not settable, its size (4) never
+  in.instance = 100;
+  in.role = assembly_role::input;
+  in.data.assign(2, 0);
+  s_.dev.assemblies.push_back(in);
+  // The Parameter class serves Set_Attribute_Single and refuses each attribute as read-only;
+  // Identity, Assembly and File serve only Get_Attribute_Single on the class.
+  const generic_case cases[] = {
+      {0x01, 1, 1, 1, 9, 0x08}, {0x04, 100, 3, 4, 5, 0x08}, {0x0F, 2, 1, 4, 22, 0x0E}, {0x37, 0xC8, 1, 6, 12, 0x08}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.cls);
+    EXPECT_EQ(ask(0x0E, c.cls, c.instance, c.readable).general, 0x00);
+    EXPECT_EQ(ask(0x0E, c.cls, c.instance, c.unknown).general, 0x14);
+    EXPECT_EQ(ask(0x10, c.cls, c.instance, c.unknown, "00").general, 0x14);
+    EXPECT_EQ(ask(0x10, c.cls, c.instance, c.read_only, "00 00").general, 0x0E);
+    EXPECT_EQ(ask(0x0E, c.cls, c.instance, std::nullopt).general, 0x08);  // no attribute named
+    EXPECT_EQ(ask(0x0E, c.cls, 0, 1).general, 0x00);
+    EXPECT_EQ(ask(0x0E, c.cls, 0, 7).general, 0x14);
+    EXPECT_EQ(ask(0x10, c.cls, 0, 1, "00 00").general, c.class_set);
+    EXPECT_EQ(ask(0x01, c.cls, 0, std::nullopt).general, 0x08);  // Get_Attribute_All of the class
+    EXPECT_EQ(ask(0x05, c.cls, c.instance, c.readable).general, 0x08);  // Reset: not served
+  }
+  // The input assembly's data is what the device produces: not settable, even at its size.
+  EXPECT_EQ(ask(0x10, 0x04, 100, 3, "01 02").general, 0x0E);
+  // Get_Attribute_All of an instance: Identity's attributes 1-7 and all 21 of a parameter; not the others.
+  EXPECT_EQ(ask(0x01, 0x01, 1, std::nullopt).general, 0x00);
+  EXPECT_EQ(ask(0x01, 0x0F, 2, std::nullopt).general, 0x00);
+  EXPECT_EQ(ask(0x01, 0x04, 100, std::nullopt).general, 0x08);
+  EXPECT_EQ(ask(0x01, 0x37, 0xC8, std::nullopt).general, 0x08);
+  // The Connection Manager has services only: a path naming an attribute does not reach it.
+  EXPECT_EQ(ask(0x0E, 0x06, 1, 1).general, 0x05);
+  EXPECT_EQ(ask(0x0E, 0x06, 0, std::nullopt).general, 0x05);
+  EXPECT_EQ(ask(0x01, 0x06, 1, std::nullopt).general, 0x08);
+}
+
 }  // namespace
 }  // namespace edsc::sim

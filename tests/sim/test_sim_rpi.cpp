@@ -14,7 +14,7 @@
 #include "cip/message.hpp"
 #include "corpus_dirs.hpp"
 #include "edit/analyze.hpp"
-#include "live/plan.hpp"
+#include "connections/plan.hpp"
 #include "netns/live_support.hpp"
 #include "sim/server.hpp"
 #include "sim/state.hpp"
@@ -64,7 +64,7 @@ status status_of(const cip::reply& r) {
 // an ownership conflict.
 status open(state& s, const model::device& dev, std::uint32_t number, std::uint32_t ot_rpi = 0,
             std::uint32_t to_rpi = 0) {
-  for (const auto& p : live::plan_connections(dev)) {
+  for (const auto& p : connections::plan_connections(dev)) {
     if (p.facts.number != number) continue;
     auto fo = p.request;
     fo.connection_serial = 0x4501;
@@ -114,7 +114,7 @@ TEST_F(sim_rpi, an_empty_rpi_field_is_served_with_the_default_limits) {
 // The client asks 10 ms where the EDS gives no RPI (a tool's default), and
 // no longer leaves such a connection unopened.
 TEST_F(sim_rpi, the_client_opens_a_connection_without_rpi_at_its_default) {
-  for (const auto& p : live::plan_connections(analysis_->dev)) {
+  for (const auto& p : connections::plan_connections(analysis_->dev)) {
     if (p.facts.number != 1) continue;
     EXPECT_EQ(p.not_openable, "");
     EXPECT_EQ(p.request.ot_rpi_us, 10000u);
@@ -185,9 +185,9 @@ TEST(sim_rpi_corpus, every_connection_without_rpi_of_the_corpora_is_accepted) {
     state s;
     s.dev = build_device(a->dev, 1);
     bool counted = false;
-    for (const auto& p : live::plan_connections(a->dev)) {
+    for (const auto& p : connections::plan_connections(a->dev)) {
       const auto& c = *p.conn;
-      if (c.ot_rpi.present() || c.to_rpi.present() || !c.decoded || !(c.tt.transport_classes & 0x2) || p.listen_only)
+      if (c.ot_rpi.present() || c.to_rpi.present() || !c.decoded || !(c.tt.transport_classes & 0x2) || p.kind.type == model::app_type::listen_only)
         continue;
       SCOPED_TRACE(path.filename().string() + " Connection" + std::to_string(c.number));
       if (!counted) {

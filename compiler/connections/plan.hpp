@@ -13,7 +13,7 @@
 #include "facts/header_view.hpp"
 #include "model/device.hpp"
 
-namespace edsc::live {
+namespace edsc::connections {
 
 // The RPI edsc asks where a ConnectionN leaves both RPI fields empty: the
 // EDS sets no interval and leaves it to the tool (EDS_FORMAT.md §3.11.1).
@@ -24,7 +24,7 @@ struct connection_plan {
   emit::eip_connection_facts facts;
   std::uint32_t ot_rpi_us = 0, to_rpi_us = 0;
   bool ot_run_idle = false, to_run_idle = false;
-  bool listen_only = false;
+  model::app_kind kind;  // the one rule (model::classify) over field 1 and the configuration
   cip::forward_open_request request;  // serials left to the caller
   cip::bytes app_path;                // without key and data (for Forward_Close)
   std::string not_openable;           // why edsc does not open it; empty: it does
@@ -56,4 +56,4 @@ struct assembly_target {
 // one, the 32-bit run/idle header (as OpENer counts them, cipioconnection.c).
 [[nodiscard]] std::uint16_t network_size(std::uint32_t data, bool run_idle);
 
-}  // namespace edsc::live
+}  // namespace edsc::connections

@@ -1,11 +1,11 @@
-#include "live/plan.hpp"
+#include "connections/plan.hpp"
 
 #include <fmt/format.h>
 
 #include "cip/message.hpp"
 #include "facts/header_parts.hpp"
 
-namespace edsc::live {
+namespace edsc::connections {
 
 namespace {
 
@@ -147,7 +147,7 @@ std::vector<connection_plan> plan_connections(const model::device& dev) {
       out.push_back(std::move(p));
       continue;
     }
-    p.listen_only = c.tt.listen_only && !c.tt.exclusive_owner && !c.tt.input_only;
+    p.kind = model::classify(c.tt, f.config_size > 0 && f.config_instance != 0);
     p.ot_run_idle = f.output_format == 4;
     p.to_run_idle = f.input_format == 4;
     p.ot_rpi_us = static_cast<std::uint32_t>(emit::number_or_param_default(dev, c.ot_rpi).value_or(0));
@@ -156,7 +156,7 @@ std::vector<connection_plan> plan_connections(const model::device& dev) {
     if (p.ot_rpi_us == 0) p.ot_rpi_us = p.to_rpi_us;
     if (p.ot_rpi_us == 0) p.ot_rpi_us = p.to_rpi_us = default_rpi_us;
     if (!(c.tt.transport_classes & 0x2)) p.not_openable = "it is not a class 1 connection";
-    else if (p.listen_only) p.not_openable = "a listen-only connection needs an owner connection that edsc does not hold";
+    else if (p.kind.type == model::app_type::listen_only) p.not_openable = "a listen-only connection needs an owner connection that edsc does not hold";
     const auto* path = dev.path_of(c.path);
     if (p.not_openable.empty() && path == nullptr) p.not_openable = "it has no connection path";
     if (p.not_openable.empty())
@@ -230,4 +230,4 @@ std::vector<assembly_target> plan_assemblies(const model::device& dev) {
   return out;
 }
 
-}  // namespace edsc::live
+}  // namespace edsc::connections
