@@ -17,6 +17,7 @@
 #include "netns/live_support.hpp"
 #include "sim_network.hpp"
 #include "test_paths.hpp"
+#include "time_scale.hpp"
 
 namespace edsc::sim_test {
 namespace {
@@ -59,15 +60,20 @@ class sim_tool : public ::testing::Test {
     return !r ? cip::reply{} : *r;
   }
   std::string log() const { return live_test::shell("cat " + net_->dir + "/sim.log").out; }
-  // Writes a control line and waits (5 s at most) for the log to hold `expect`.
-  bool control(const std::string& line, const std::string& expect) {
-    const auto text = line + "\n";
-    if (::write(fifo_, text.data(), text.size()) != static_cast<ssize_t>(text.size())) return false;
-    for (int i = 0; i < 100; ++i) {
+  // Waits (5 s at most, scaled) for the log to hold `expect`: the simulator
+  // answers before it logs, so a line may come just after the reply.
+  bool logged(const std::string& expect) const {
+    for (int i = 0; i < 100 * test_time::scale; ++i) {
       if (log().find(expect) != std::string::npos) return true;
       std::this_thread::sleep_for(50ms);
     }
     return false;
+  }
+  // Writes a control line and waits for the log to hold `expect`.
+  bool control(const std::string& line, const std::string& expect) {
+    const auto text = line + "\n";
+    if (::write(fifo_, text.data(), text.size()) != static_cast<ssize_t>(text.size())) return false;
+    return logged(expect);
   }
 
   std::unique_ptr<test_network> net_;
@@ -97,7 +103,7 @@ TEST_F(sim_tool, the_eds_uploaded_from_the_file_object_is_the_file) {
   }
   EXPECT_EQ(packets, 75);  // 17796 / 240 = 74 whole packets and one of 36
   EXPECT_EQ(got, file);
-  EXPECT_NE(log().find("{\"event\":\"uploaded\",\"instance\":200,\"size\":17796}"), std::string::npos) << log();
+  EXPECT_TRUE(logged("{\"event\":\"uploaded\",\"instance\":200,\"size\":17796}")) << log();
   // The same through the command a user runs.
   const auto out = net_->dir + "/uploaded.eds";
   const auto r = run_edsc("probe " + net_->device_ip + " --upload-eds " + live_test::quoted(out), 60);
