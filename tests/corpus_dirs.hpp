@@ -45,8 +45,7 @@ inline std::size_t sample_stride() {
     try {
       const long n = std::stol(env);
       if (n > 0) return static_cast<std::size_t>(n);
-    } catch (...) {
-    }
+    } catch (...) {}
   }
   return EDSC_CORPUS_SAMPLE > 0 ? EDSC_CORPUS_SAMPLE : 1;
 }
@@ -69,7 +68,8 @@ inline std::vector<std::filesystem::path> sample() {
       i = 0;
     }
     const auto name = f.filename().string();
-    if (i++ % stride == 0 || std::find(std::begin(broken), std::end(broken), name) != std::end(broken)) out.push_back(f);
+    if (i++ % stride == 0 || std::find(std::begin(broken), std::end(broken), name) != std::end(broken))
+      out.push_back(f);
   }
   return out;
 }

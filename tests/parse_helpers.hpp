@@ -87,8 +87,7 @@ struct parsed {
     std::vector<std::string> out;
     for (const auto& d : diags()) {
       const auto p = src->position(d.where.begin);
-      out.push_back(std::string(rule_of(d.id).name) + "@" + std::to_string(p.line) + ":" +
-                    std::to_string(p.column));
+      out.push_back(std::string(rule_of(d.id).name) + "@" + std::to_string(p.line) + ":" + std::to_string(p.column));
     }
     return out;
   }

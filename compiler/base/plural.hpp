@@ -36,7 +36,8 @@ namespace edsc {
   const bool spelt = words.size() > 1 && c >= 'A' && c <= 'Z' && words[1] >= 'A' && words[1] <= 'Z';
   if (spelt) return std::string_view("AEFHILMNORSX").find(c) != std::string_view::npos ? "an" : "a";
   // Eight, eleven, eighteen: "an 8-bit", "an 11-bit", "an 18 mm" (not "a 110").
-  const bool teen = (words.starts_with("11") || words.starts_with("18")) && (words.size() == 2 || words[2] < '0' || words[2] > '9');
+  const bool teen =
+      (words.starts_with("11") || words.starts_with("18")) && (words.size() == 2 || words[2] < '0' || words[2] > '9');
   if (c == '8' || teen) return "an";
   if (c == 'u' || c == 'U') {
     for (const std::string_view you : {"uni", "use", "usu", "uti", "Uni", "Use", "Usu", "Uti"})

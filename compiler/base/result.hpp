@@ -30,29 +30,43 @@ class [[nodiscard]] result {
   using value_type = T;
   using error_type = E;
 
-  result()
-    requires std::is_default_constructible_v<T>
+  result() requires std::is_default_constructible_v<T>
   = default;
-  result(T v) : v_(std::in_place_index<0>, std::move(v)) {}                  // NOLINT: implicit by design
-  result(E e) : v_(std::in_place_index<1>, std::move(e)) {}                  // NOLINT: implicit by design
+  result(T v) : v_(std::in_place_index<0>, std::move(v)) {}  // NOLINT: implicit by design
+  result(E e) : v_(std::in_place_index<1>, std::move(e)) {}  // NOLINT: implicit by design
   template <class F>
-    requires std::is_constructible_v<E, F>
-  result(failure<F> f) : v_(std::in_place_index<1>, std::move(f.error)) {}  // NOLINT: implicit by design
+  requires std::is_constructible_v<E, F> result(failure<F> f)
+      : v_(std::in_place_index<1>, std::move(f.error)) {}  // NOLINT: implicit by design
 
   [[nodiscard]] bool has_value() const { return v_.index() == 0; }
   [[nodiscard]] bool ok() const { return has_value(); }
   explicit operator bool() const { return has_value(); }
 
-  [[nodiscard]] const T& value() const& { assert(has_value()); return *std::get_if<0>(&v_); }
-  [[nodiscard]] T& value() & { assert(has_value()); return *std::get_if<0>(&v_); }
-  [[nodiscard]] T&& value() && { assert(has_value()); return std::move(*std::get_if<0>(&v_)); }
+  [[nodiscard]] const T& value() const& {
+    assert(has_value());
+    return *std::get_if<0>(&v_);
+  }
+  [[nodiscard]] T& value() & {
+    assert(has_value());
+    return *std::get_if<0>(&v_);
+  }
+  [[nodiscard]] T&& value() && {
+    assert(has_value());
+    return std::move(*std::get_if<0>(&v_));
+  }
   [[nodiscard]] const T& operator*() const& { return value(); }
   [[nodiscard]] T& operator*() & { return value(); }
   [[nodiscard]] const T* operator->() const { return &value(); }
   [[nodiscard]] T* operator->() { return &value(); }
 
-  [[nodiscard]] const E& error() const& { assert(!has_value()); return *std::get_if<1>(&v_); }
-  [[nodiscard]] E& error() & { assert(!has_value()); return *std::get_if<1>(&v_); }
+  [[nodiscard]] const E& error() const& {
+    assert(!has_value());
+    return *std::get_if<1>(&v_);
+  }
+  [[nodiscard]] E& error() & {
+    assert(!has_value());
+    return *std::get_if<1>(&v_);
+  }
 
   template <class U>
   [[nodiscard]] T value_or(U&& other) const& {
@@ -71,15 +85,18 @@ class [[nodiscard]] result<void, E> {
   using error_type = E;
 
   result() = default;
-  result(E e) : e_(std::move(e)), failed_(true) {}                             // NOLINT: implicit by design
+  result(E e) : e_(std::move(e)), failed_(true) {}  // NOLINT: implicit by design
   template <class F>
-    requires std::is_constructible_v<E, F>
-  result(failure<F> f) : e_(std::move(f.error)), failed_(true) {}           // NOLINT: implicit by design
+  requires std::is_constructible_v<E, F> result(failure<F> f)
+      : e_(std::move(f.error)), failed_(true) {}  // NOLINT: implicit by design
 
   [[nodiscard]] bool has_value() const { return !failed_; }
   [[nodiscard]] bool ok() const { return has_value(); }
   explicit operator bool() const { return has_value(); }
-  [[nodiscard]] const E& error() const& { assert(failed_); return e_; }
+  [[nodiscard]] const E& error() const& {
+    assert(failed_);
+    return e_;
+  }
 
  private:
   E e_{};

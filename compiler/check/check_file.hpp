@@ -4,8 +4,8 @@
 #include <optional>
 #include <string>
 
-#include "diag/policy.hpp"
 #include "cst/cst.hpp"
+#include "diag/policy.hpp"
 #include "diag/report.hpp"
 #include "model/device.hpp"
 

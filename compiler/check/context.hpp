@@ -17,8 +17,7 @@ struct check_context {
   diagnostic& report(diag_id id, span where, std::string message) const {
     return out.emplace_back(make_diagnostic(id, where, std::move(message)));
   }
-  diagnostic& report_with_note(diag_id id, span where, std::string message, span note_at,
-                               std::string note) const {
+  diagnostic& report_with_note(diag_id id, span where, std::string message, span note_at, std::string note) const {
     auto& d = report(id, where, std::move(message));
     d.notes.push_back({note_at, std::move(note)});
     return d;

@@ -7,8 +7,8 @@
 
 #include <fmt/format.h>
 
-#include "check/context.hpp"
 #include "base/plural.hpp"
+#include "check/context.hpp"
 #include "schema/cip_types.hpp"
 
 namespace edsc {
@@ -24,7 +24,9 @@ using schema::ref_kind;
 bool in_range(ref_kind k, ref_kind first, ref_kind last) {
   return static_cast<int>(k) >= static_cast<int>(first) && static_cast<int>(k) <= static_cast<int>(last);
 }
-bool names_assembly(const model::reference& r) { return in_range(r.kind, ref_kind::assem, ref_kind::proxied_assem_exa); }
+bool names_assembly(const model::reference& r) {
+  return in_range(r.kind, ref_kind::assem, ref_kind::proxied_assem_exa);
+}
 bool names_variant(const model::reference& r) { return in_range(r.kind, ref_kind::variant, ref_kind::variant_exa); }
 
 // A resolved reference to an assembly (any of the AssemN family).
@@ -58,9 +60,9 @@ void check_total(const check_context& ctx, const model::assembly& a) {
   // Members that add up to the Size itself were counted in bytes, not bits.
   // No fix-it: either side may be the wrong one.
   ctx.report(diag_id::assembly_size_mismatch, ctx.where(a.size),
-                       fmt::format("{} Size is {} ({} bits) but its members add up to {}{}", assembly_name(a),
-                                   plural(bytes, "byte"), 8 * bytes, plural(bits, "bit"),
-                                   bits == bytes ? " (the member sizes look like bytes; they count bits)" : ""));
+             fmt::format("{} Size is {} ({} bits) but its members add up to {}{}", assembly_name(a),
+                         plural(bytes, "byte"), 8 * bytes, plural(bits, "bit"),
+                         bits == bytes ? " (the member sizes look like bytes; they count bits)" : ""));
 }
 
 // Packed layouts (Rockwell files especially) give a parameter fewer bits
@@ -91,12 +93,12 @@ void check_member_widths(const check_context& ctx, const model::assembly& a) {
     if (const auto* inner = target_assembly(ctx, m.ref)) {
       const auto inner_bytes = assembly_bytes(*inner);
       if (inner_bytes && bits != 8 * *inner_bytes) {
-        ctx.report_with_note(diag_id::assembly_member_assembly_size, ctx.where(m.size),
-                             fmt::format("{} gives member {} {} but {} is {} ({} bits)", assembly_name(a),
-                                         m.ref.text, plural(bits, "bit"), m.ref.text, plural(*inner_bytes, "byte"),
-                                         8 * *inner_bytes),
-                             inner->size.present() ? ctx.where(inner->size) : ctx.entry_keyword(inner->from),
-                             fmt::format("{} size is given here", m.ref.text));
+        ctx.report_with_note(
+            diag_id::assembly_member_assembly_size, ctx.where(m.size),
+            fmt::format("{} gives member {} {} but {} is {} ({} bits)", assembly_name(a), m.ref.text,
+                        plural(bits, "bit"), m.ref.text, plural(*inner_bytes, "byte"), 8 * *inner_bytes),
+            inner->size.present() ? ctx.where(inner->size) : ctx.entry_keyword(inner->from),
+            fmt::format("{} size is given here", m.ref.text));
       }
       continue;
     }
@@ -105,12 +107,12 @@ void check_member_widths(const check_context& ctx, const model::assembly& a) {
     if (p.type == nullptr || p.type->size == 0) continue;  // strings, EPATH, STRINGI: length varies
     if (bits == 8u * p.type->size || (bits < 8u * p.type->size && range_fits(p, bits))) continue;
     const bool narrow = bits < 8u * p.type->size;
-    ctx.report_with_note(diag_id::assembly_member_param_size, ctx.where(m.size),
-                         fmt::format("{} gives member {} {} but {} is {} ({} bits){}", assembly_name(a),
-                                     m.ref.text, plural(bits, "bit"), m.ref.text, p.type->name, 8 * p.type->size,
-                                     narrow ? " and its range does not fit in fewer" : ""),
-                         ctx.where(narrow ? p.max : p.data_type),
-                         fmt::format("{} {} is given here", m.ref.text, narrow ? "maximum" : "data type"));
+    ctx.report_with_note(
+        diag_id::assembly_member_param_size, ctx.where(m.size),
+        fmt::format("{} gives member {} {} but {} is {} ({} bits){}", assembly_name(a), m.ref.text, plural(bits, "bit"),
+                    m.ref.text, p.type->name, 8 * p.type->size, narrow ? " and its range does not fit in fewer" : ""),
+        ctx.where(narrow ? p.max : p.data_type),
+        fmt::format("{} {} is given here", m.ref.text, narrow ? "maximum" : "data type"));
   }
 }
 
@@ -172,7 +174,8 @@ void check_cycles(const check_context& ctx) {
       std::size_t start = 0;
       while (stack[start].node != l.to) ++start;
       std::string names;
-      for (std::size_t i = start; i < stack.size(); ++i) names += assembly_name(ctx.dev.assemblies[stack[i].node]) + " -> ";
+      for (std::size_t i = start; i < stack.size(); ++i)
+        names += assembly_name(ctx.dev.assemblies[stack[i].node]) + " -> ";
       names += assembly_name(ctx.dev.assemblies[l.to]);
       const auto& first = graph[stack[start].node][stack[start].next - 1];
       ctx.report_with_note(diag_id::assembly_cycle, ctx.where(*l.via),
@@ -191,8 +194,9 @@ void check_variants(const check_context& ctx) {
                  fmt::format("{} has no selector (field 6): its layout cannot be confirmed", name));
     }
     if (v.choices.size() < 2) {
-      ctx.report(diag_id::variant_incomplete, ctx.entry_keyword(v.from),
-                 fmt::format("{} offers {}; a variant needs at least two", name, plural(v.choices.size(), "selection")));
+      ctx.report(
+          diag_id::variant_incomplete, ctx.entry_keyword(v.from),
+          fmt::format("{} offers {}; a variant needs at least two", name, plural(v.choices.size(), "selection")));
     }
   }
 }

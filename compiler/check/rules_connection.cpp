@@ -7,8 +7,8 @@
 
 #include <fmt/format.h>
 
-#include "check/context.hpp"
 #include "base/plural.hpp"
+#include "check/context.hpp"
 #include "schema/cip_types.hpp"
 
 namespace edsc {
@@ -29,13 +29,15 @@ bool kind_between(ref_kind k, ref_kind first, ref_kind last) {
 
 const model::assembly* format_assembly(const check_context& ctx, const model::value& v) {
   const auto* r = v.as_ref();
-  if (r == nullptr || !r->resolved() || !kind_between(r->kind, ref_kind::assem, ref_kind::proxied_assem_exa)) return nullptr;
+  if (r == nullptr || !r->resolved() || !kind_between(r->kind, ref_kind::assem, ref_kind::proxied_assem_exa))
+    return nullptr;
   return &ctx.dev.assemblies[r->target];
 }
 
 const model::param* param_ref(const check_context& ctx, const model::value& v) {
   const auto* r = v.as_ref();
-  if (r == nullptr || !r->resolved() || !kind_between(r->kind, ref_kind::param, ref_kind::proxied_param)) return nullptr;
+  if (r == nullptr || !r->resolved() || !kind_between(r->kind, ref_kind::param, ref_kind::proxied_param))
+    return nullptr;
   return &ctx.dev.params[r->target];
 }
 
@@ -58,7 +60,9 @@ struct direction {
 // connections are written `0x00000000, 0x00110000`). It needs no transport
 // class, application type or heartbeat.
 bool null_connection(const model::connection& c) {
-  const auto only_null = [](const model::direction_params& d) { return d.type_null && !d.type_multicast && !d.type_p2p; };
+  const auto only_null = [](const model::direction_params& d) {
+    return d.type_null && !d.type_multicast && !d.type_p2p;
+  };
   return only_null(c.cp.ot) && only_null(c.cp.to);
 }
 
@@ -94,7 +98,8 @@ void check_params_bits(const check_context& ctx, const std::string& cn, const mo
                            "must be 0)",
                            cn, raw, raw & reserved));
   }
-  for (const auto& [name, fmt_value] : {std::pair{"O->T", c.cp.ot.real_time_format}, std::pair{"T->O", c.cp.to.real_time_format}}) {
+  for (const auto& [name, fmt_value] :
+       {std::pair{"O->T", c.cp.ot.real_time_format}, std::pair{"T->O", c.cp.to.real_time_format}}) {
     if (fmt_value >= 6) {
       ctx.report(diag_id::connection_real_time_format, ctx.where(c.params),
                  fmt::format("{} {} real-time format is {}, which is undefined", cn, name, fmt_value));
@@ -119,19 +124,20 @@ void check_direction_bits(const check_context& ctx, const std::string& cn, const
   const auto missing = !size_kind && !conn_type ? "neither fixed/variable size nor a connection type"
                        : !size_kind             ? "neither fixed nor variable size"
                                                 : "no connection type";
-  ctx.report(diag_id::connection_direction_bits, ctx.where(c.params),
-             fmt::format("{} carries {} data but its connection parameters 0x{:08X} allow {} for {} (bits {}-{}, {}-{})",
-                         cn, d.name, c.params.as_uint(), missing, d.name, d.fixed_bit, d.fixed_bit + 1, d.type_bit,
-                         d.type_bit + 2));
+  ctx.report(
+      diag_id::connection_direction_bits, ctx.where(c.params),
+      fmt::format("{} carries {} data but its connection parameters 0x{:08X} allow {} for {} (bits {}-{}, {}-{})", cn,
+                  d.name, c.params.as_uint(), missing, d.name, d.fixed_bit, d.fixed_bit + 1, d.type_bit,
+                  d.type_bit + 2));
 }
 
 void check_rpi(const check_context& ctx, const std::string& cn, const direction& d) {
   const auto* p = param_ref(ctx, d.rpi);
   if (p == nullptr || p->type == nullptr || p->type->code == schema::code::UDINT) return;
-  ctx.report_with_note(diag_id::connection_rpi_type, ctx.where(d.rpi),
-                       fmt::format("{} {} RPI names {}, a {}; RPIs are UDINT microseconds", cn, d.name, d.rpi.text,
-                                   p->type->name),
-                       ctx.where(p->data_type), fmt::format("{} data type is given here", d.rpi.text));
+  ctx.report_with_note(
+      diag_id::connection_rpi_type, ctx.where(d.rpi),
+      fmt::format("{} {} RPI names {}, a {}; RPIs are UDINT microseconds", cn, d.name, d.rpi.text, p->type->name),
+      ctx.where(p->data_type), fmt::format("{} data type is given here", d.rpi.text));
 }
 
 void check_size(const check_context& ctx, const std::string& cn, const direction& d) {
@@ -151,11 +157,11 @@ void check_size(const check_context& ctx, const std::string& cn, const direction
   const bool below = p->min.is_integer() && p->min.as_int() > static_cast<std::int64_t>(*bytes);
   const bool above = p->max.is_integer() && p->max.as_int() < static_cast<std::int64_t>(*bytes);
   if (!below && !above) return;
-  ctx.report_with_note(diag_id::connection_size_format, ctx.where(d.size),
-                       fmt::format("{} {} size {} ranges {}..{}, which excludes the {} of its format {}", cn,
-                                   d.name, d.size.text, ctx.raw(p->min), ctx.raw(p->max), plural(*bytes, "byte"),
-                                   assembly_name(*a)),
-                       assembly_size_at(ctx, *a), fmt::format("{} size is given here", assembly_name(*a)));
+  ctx.report_with_note(
+      diag_id::connection_size_format, ctx.where(d.size),
+      fmt::format("{} {} size {} ranges {}..{}, which excludes the {} of its format {}", cn, d.name, d.size.text,
+                  ctx.raw(p->min), ctx.raw(p->max), plural(*bytes, "byte"), assembly_name(*a)),
+      assembly_size_at(ctx, *a), fmt::format("{} size is given here", assembly_name(*a)));
 }
 
 // O->T data size as far as the file tells: the size field, else the format's.
@@ -166,8 +172,7 @@ std::optional<std::uint64_t> effective_size(const check_context& ctx, const dire
   return std::nullopt;
 }
 
-void check_heartbeat(const check_context& ctx, const std::string& cn, const model::connection& c,
-                     const direction& ot) {
+void check_heartbeat(const check_context& ctx, const std::string& cn, const model::connection& c, const direction& ot) {
   const auto size = effective_size(ctx, ot);
   if (!size || null_connection(c)) return;
   const auto format = c.cp.ot.real_time_format;
@@ -194,8 +199,8 @@ std::optional<std::uint32_t> assembly_instance(const check_context& ctx, const m
   return std::nullopt;
 }
 
-void check_points(const check_context& ctx, const std::string& cn, const model::connection& c,
-                  const direction& ot, const direction& to) {
+void check_points(const check_context& ctx, const std::string& cn, const model::connection& c, const direction& ot,
+                  const direction& to) {
   const auto* path = ctx.dev.path_of(c.path);
   if (path == nullptr) return;
   std::vector<const model::epath_segment*> points;
@@ -209,13 +214,12 @@ void check_points(const check_context& ctx, const std::string& cn, const model::
     if (a == nullptr || !points[i]->value_known()) continue;
     const auto inst = assembly_instance(ctx, *a);
     if (!inst || *inst == points[i]->value) continue;
-    ctx.report_with_note(diag_id::connection_point_mismatch, ctx.where(c.path),
-                         fmt::format("{} path names {} connection point {} (0x{:02X}) but its {} format {} is "
-                                     "instance {} (0x{:02X})",
-                                     cn, d.name, points[i]->value, points[i]->value, d.name, assembly_name(*a), *inst,
-                                     *inst),
-                         ctx.where(a->path),
-                         fmt::format("{} is addressed here", assembly_name(*a)));
+    ctx.report_with_note(
+        diag_id::connection_point_mismatch, ctx.where(c.path),
+        fmt::format("{} path names {} connection point {} (0x{:02X}) but its {} format {} is "
+                    "instance {} (0x{:02X})",
+                    cn, d.name, points[i]->value, points[i]->value, d.name, assembly_name(*a), *inst, *inst),
+        ctx.where(a->path), fmt::format("{} is addressed here", assembly_name(*a)));
   }
 }
 

@@ -5,9 +5,9 @@
 
 #include <fmt/format.h>
 
+#include "base/plural.hpp"
 #include "check/context.hpp"
 #include "check/value_order.hpp"
-#include "base/plural.hpp"
 
 namespace edsc {
 
@@ -44,9 +44,8 @@ void check_enum(const check_context& ctx, const model::param_enum& e) {
   };
   // Most enumerations count up (0, 1, 2...): strictly ascending keys repeat
   // nothing, and need neither the sort nor the table.
-  const bool ascending = std::adjacent_find(keys.begin(), keys.end(), [&](const keyed& a, const keyed& b) {
-                           return !order(a, b);
-                         }) == keys.end();
+  const bool ascending = std::adjacent_find(keys.begin(), keys.end(),
+                                            [&](const keyed& a, const keyed& b) { return !order(a, b); }) == keys.end();
   if (!ascending) std::stable_sort(keys.begin(), keys.end(), order);
   std::vector<std::uint32_t> first_of(ascending ? 0 : e.pairs.size(), model::none);
   for (std::size_t k = 1; !ascending && k < keys.size(); ++k) {
@@ -80,8 +79,8 @@ void check_enum_descriptor(const check_context& ctx, const model::param& p) {
   const bool has_enum = p.enum_index != model::none || p.enum_par_index != model::none;
   if ((desc & model::pd_enumerated) && !has_enum) {
     ctx.report(diag_id::param_enum_descriptor, ctx.where(p.descriptor),
-               fmt::format("Param{} descriptor 0x{:04X} announces enumerated strings but there is no Enum{}",
-                           p.number, desc, p.number));
+               fmt::format("Param{} descriptor 0x{:04X} announces enumerated strings but there is no Enum{}", p.number,
+                           desc, p.number));
   }
   // The reverse (EnumN without bit 1) is how most real files are written
   // (thousands of parameters in the corpus), so it is not reported.
@@ -97,9 +96,10 @@ void check_enum_par(const check_context& ctx, const model::enum_par& e) {
   if (!p.min.is_integer() || !p.max.is_integer() || compare_numbers(p.min, p.max) > 0) return;
   const auto span_of_values = static_cast<std::uint64_t>(p.max.as_int() - p.min.as_int()) + 1;
   if (span_of_values != e.strings.size()) {
-    ctx.report(diag_id::enumpar_count, ctx.entry_keyword(e.from),
-               fmt::format("[EnumPar] Param{} lists {} for the {} {} to {}", e.number, plural(e.strings.size(), "string"),
-                           plural(span_of_values, "value"), ctx.raw(p.min), ctx.raw(p.max)));
+    ctx.report(
+        diag_id::enumpar_count, ctx.entry_keyword(e.from),
+        fmt::format("[EnumPar] Param{} lists {} for the {} {} to {}", e.number, plural(e.strings.size(), "string"),
+                    plural(span_of_values, "value"), ctx.raw(p.min), ctx.raw(p.max)));
   }
 }
 
@@ -107,16 +107,16 @@ void check_groups(const check_context& ctx) {
   std::map<std::uint64_t, const model::group*> member_of;
   for (const auto& g : ctx.dev.groups) {
     if (g.count.is_integer() && g.count.as_uint() != g.members.size()) {
-      ctx.report(diag_id::group_count, ctx.where(g.count),
-                 fmt::format("Group{} says {} but lists {}", g.number, plural(g.count.as_uint(), "member"),
-                             g.members.size()));
+      ctx.report(
+          diag_id::group_count, ctx.where(g.count),
+          fmt::format("Group{} says {} but lists {}", g.number, plural(g.count.as_uint(), "member"), g.members.size()));
     }
     for (const auto& m : g.members) {
       if (!m.is_integer()) continue;
       if (const auto [it, fresh] = member_of.emplace(m.as_uint(), &g); !fresh && it->second != &g) {
-        ctx.report(diag_id::group_duplicate_member, ctx.where(m),
-                   fmt::format("Param{} is a member of Group{} and of Group{}", m.as_uint(), it->second->number,
-                               g.number));
+        ctx.report(
+            diag_id::group_duplicate_member, ctx.where(m),
+            fmt::format("Param{} is a member of Group{} and of Group{}", m.as_uint(), it->second->number, g.number));
       }
     }
   }

@@ -58,9 +58,9 @@ void check_file_name(const check_context& ctx) {
   for (std::size_t i = 0; i < 16; ++i) {
     if (!std::isxdigit(static_cast<unsigned char>(name[i]))) return;
   }
-  const auto expected = fmt::format("{:04X}{:04X}{:04X}{:02X}00", id.vend_code.as_uint() & 0xFFFF,
-                                    id.prod_type.as_uint() & 0xFFFF, id.prod_code.as_uint() & 0xFFFF,
-                                    id.maj_rev.as_uint() & 0xFF);
+  const auto expected =
+      fmt::format("{:04X}{:04X}{:04X}{:02X}00", id.vend_code.as_uint() & 0xFFFF, id.prod_type.as_uint() & 0xFFFF,
+                  id.prod_code.as_uint() & 0xFFFF, id.maj_rev.as_uint() & 0xFF);
   std::string stem = name.substr(0, 16);
   for (auto& c : stem) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   if (stem != expected) {
@@ -80,7 +80,9 @@ void check_identity(const check_context& ctx) {
   } else {
     const auto& f = d.file;
     check_required(ctx, f.section, "File",
-                   {{&f.desc_text, "DescText"}, {&f.create_date, "CreateDate"}, {&f.create_time, "CreateTime"},
+                   {{&f.desc_text, "DescText"},
+                    {&f.create_date, "CreateDate"},
+                    {&f.create_time, "CreateTime"},
                     {&f.revision, "Revision"}});
   }
   const auto& id = d.identity;
@@ -88,9 +90,14 @@ void check_identity(const check_context& ctx) {
     ctx.report(diag_id::missing_section, {0, 0}, "the file has no [Device] section, which is required");
   } else {
     check_required(ctx, id.section, "Device",
-                   {{&id.vend_code, "VendCode"}, {&id.vend_name, "VendName"}, {&id.prod_type, "ProdType"},
-                    {&id.prod_type_str, "ProdTypeStr"}, {&id.prod_code, "ProdCode"}, {&id.maj_rev, "MajRev"},
-                    {&id.min_rev, "MinRev"}, {&id.prod_name, "ProdName"}});
+                   {{&id.vend_code, "VendCode"},
+                    {&id.vend_name, "VendName"},
+                    {&id.prod_type, "ProdType"},
+                    {&id.prod_type_str, "ProdTypeStr"},
+                    {&id.prod_code, "ProdCode"},
+                    {&id.maj_rev, "MajRev"},
+                    {&id.min_rev, "MinRev"},
+                    {&id.prod_name, "ProdName"}});
   }
   if (id.maj_rev.is_integer() && id.maj_rev.as_uint() == 0) {
     ctx.report(diag_id::majrev_zero, ctx.where(id.maj_rev), "MajRev is 0; major revisions start at 1");

@@ -4,8 +4,8 @@
 
 #include <fmt/format.h>
 
-#include "check/context.hpp"
 #include "base/plural.hpp"
+#include "check/context.hpp"
 
 namespace edsc {
 
@@ -22,9 +22,9 @@ void check_mask(const check_context& ctx, const model::value& mask, std::string_
   if (!mask.is_integer()) return;
   const auto m = mask.as_uint();
   if (m & 0xFFE0) {
-    ctx.report(diag_id::io_info_mask_reserved, ctx.where(mask),
-               fmt::format("{} mask 0x{:04X} sets reserved bits 0x{:04X} (only 0x000F are defined)", what, m,
-                           m & 0xFFE0));
+    ctx.report(
+        diag_id::io_info_mask_reserved, ctx.where(mask),
+        fmt::format("{} mask 0x{:04X} sets reserved bits 0x{:04X} (only 0x000F are defined)", what, m, m & 0xFFE0));
   } else if (m & model::io_multicast_poll) {
     ctx.report(diag_id::io_info_mask_multicast, ctx.where(mask),
                fmt::format("{} mask 0x{:04X} sets bit 4 (multicast poll), whose meaning is unconfirmed", what, m));
@@ -37,8 +37,8 @@ void check_data(const check_context& ctx, const model::io_data& d, std::string_v
   if (d.path_size.is_integer() && d.path.ok()) {
     if (const auto* p = ctx.dev.path_of(d.path); p != nullptr && p->byte_count != d.path_size.as_uint()) {
       auto& diag = ctx.report(diag_id::io_info_path_size, ctx.where(d.path_size),
-                              fmt::format("{} path size is {} but the path holds {}", name,
-                                          d.path_size.as_uint(), plural(p->byte_count, "byte")));
+                              fmt::format("{} path size is {} but the path holds {}", name, d.path_size.as_uint(),
+                                          plural(p->byte_count, "byte")));
       diag.notes.push_back({ctx.where(d.path), "the path is here"});
       diag.fixits.push_back({ctx.where(d.path_size), std::to_string(p->byte_count)});
     }
@@ -52,11 +52,12 @@ void check_data(const check_context& ctx, const model::io_data& d, std::string_v
                              plural(bytes, "byte"), 8 * bytes));
     } else if (bits != 0 && bytes > 1 && bits <= 8 * (bytes - 1)) {
       const auto unused = bytes - (bits + 7) / 8;
-      ctx.report(diag_id::io_info_significant_bits_low, ctx.where(d.significant_bits),
-                 fmt::format("{} declares {} for {} bytes: the last {} {} nothing; "
-                             "write 0 (all bits) or {}",
-                             name, plural(bits, "significant bit"), bytes, unused == 1 ? "byte" : plural(unused, "byte"),
-                             noun(unused, "carries", "carry"), 8 * bytes));
+      ctx.report(
+          diag_id::io_info_significant_bits_low, ctx.where(d.significant_bits),
+          fmt::format("{} declares {} for {} bytes: the last {} {} nothing; "
+                      "write 0 (all bits) or {}",
+                      name, plural(bits, "significant bit"), bytes, unused == 1 ? "byte" : plural(unused, "byte"),
+                      noun(unused, "carries", "carry"), 8 * bytes));
     }
     if (bytes > 8 && section == "IO_Info") {
       ctx.report(diag_id::io_info_fragmented, ctx.where(d.size),
@@ -86,15 +87,14 @@ void check_default_ref(const check_context& ctx, const model::io_info& io, const
   const char* kind = output ? "Output" : "Input";
   if (target == nullptr) {
     ctx.report(output ? diag_id::io_info_default_output : diag_id::io_info_default_input, ctx.where(v),
-               fmt::format("{} names {}{} as its default {}, but there is no {}{}", info_names[type], kind,
-                           v.as_uint(), output ? "output" : "input", kind, v.as_uint()));
+               fmt::format("{} names {}{} as its default {}, but there is no {}{}", info_names[type], kind, v.as_uint(),
+                           output ? "output" : "input", kind, v.as_uint()));
     return;
   }
   if (target->mask.is_integer() && (target->mask.as_uint() & info_bits[type]) == 0) {
     ctx.report_with_note(diag_id::io_info_default_mask, ctx.where(v),
-                         fmt::format("{} uses {} but {}'s connection mask 0x{:04X} does not allow {}",
-                                     info_names[type], data_name(*target), data_name(*target),
-                                     target->mask.as_uint(), info_names[type]),
+                         fmt::format("{} uses {} but {}'s connection mask 0x{:04X} does not allow {}", info_names[type],
+                                     data_name(*target), data_name(*target), target->mask.as_uint(), info_names[type]),
                          ctx.where(target->mask), fmt::format("{} is declared here", data_name(*target)));
   }
 }
@@ -110,8 +110,9 @@ void check_connections(const check_context& ctx, const model::io_info& io) {
     if (!c.mask.is_integer()) continue;
     const auto m = c.mask.as_uint();
     if ((m & info_bits[type]) == 0) {
-      ctx.report(diag_id::io_info_compat_self, ctx.where(c.mask),
-                 fmt::format("{} compatibility mask 0x{:04X} does not include its own connection type", info_names[type], m));
+      ctx.report(
+          diag_id::io_info_compat_self, ctx.where(c.mask),
+          fmt::format("{} compatibility mask 0x{:04X} does not include its own connection type", info_names[type], m));
     }
     if ((c.type == io_connection::cos && (m & model::io_cyclic)) ||
         (c.type == io_connection::cyclic && (m & model::io_cos))) {

@@ -1,10 +1,10 @@
 // [Params] ParamN (EDS_FORMAT.md §3.7, §7 rules 14-19).
 #include <fmt/format.h>
 
+#include "base/plural.hpp"
 #include "check/context.hpp"
 #include "check/text_length.hpp"
 #include "check/value_order.hpp"
-#include "base/plural.hpp"
 #include "schema/cip_types.hpp"
 
 namespace edsc {
@@ -53,10 +53,10 @@ void check_string_limits(const check_context& ctx, const model::param& p) {
   const bool too_short = p.min.is_integer() && length < p.min.as_uint();
   const bool too_long = p.max.is_integer() && length > p.max.as_uint();
   if (too_short || too_long) {
-    ctx.report(diag_id::param_string_length, ctx.where(def),
-               fmt::format("{} default is {}, outside its length bounds {} to {}", pname(p),
-                           eight_bit ? byte_length(def.text) : plural(length, "character"), ctx.raw(p.min),
-                           ctx.raw(p.max)));
+    ctx.report(
+        diag_id::param_string_length, ctx.where(def),
+        fmt::format("{} default is {}, outside its length bounds {} to {}", pname(p),
+                    eight_bit ? byte_length(def.text) : plural(length, "character"), ctx.raw(p.min), ctx.raw(p.max)));
   }
 }
 
@@ -73,9 +73,10 @@ void check_limits(const check_context& ctx, const model::param& p) {
   const auto& hi = p.max;
   const auto& def = p.default_value;
   if (is_number(lo) && is_number(hi) && compare_numbers(lo, hi) > 0) {
-    ctx.report_with_note(diag_id::param_min_max, ctx.where(lo),
-                         fmt::format("{} minimum {} is greater than its maximum {}", pname(p), ctx.raw(lo), ctx.raw(hi)),
-                         ctx.where(hi), "the maximum is here");
+    ctx.report_with_note(
+        diag_id::param_min_max, ctx.where(lo),
+        fmt::format("{} minimum {} is greater than its maximum {}", pname(p), ctx.raw(lo), ctx.raw(hi)), ctx.where(hi),
+        "the maximum is here");
     return;
   }
   if (!is_number(def)) return;
@@ -97,9 +98,9 @@ void check_link_path(const check_context& ctx, const model::param& p) {
   const std::uint64_t size = p.link_path_size.present() ? p.link_path_size.as_uint() : 0;
   if (size == bytes) return;
   if (size != 0 && bytes != 0) {
-    auto& d = ctx.report(diag_id::param_link_path_size, ctx.where(p.link_path_size),
-                         fmt::format("{} link path size is {} but the path holds {}", pname(p), size,
-                                     plural(bytes, "byte")));
+    auto& d =
+        ctx.report(diag_id::param_link_path_size, ctx.where(p.link_path_size),
+                   fmt::format("{} link path size is {} but the path holds {}", pname(p), size, plural(bytes, "byte")));
     d.fixits.push_back({ctx.where(p.link_path_size), std::to_string(bytes)});
   } else {
     ctx.report(diag_id::param_link_path_size, ctx.where(size != 0 ? p.link_path_size : p.link_path),
@@ -128,9 +129,9 @@ void check_scaling(const check_context& ctx, const model::param& p) {
   const bool scaling_given = p.scaling_multiplier.present() || p.scaling_divisor.present() ||
                              p.scaling_base.present() || p.scaling_offset.present();
   if ((desc & model::pd_scaling) && !scaling_given) {
-    ctx.report(diag_id::param_scaling_descriptor, ctx.where(p.descriptor),
-               fmt::format("{} descriptor 0x{:04X} announces scaling (bit 2) but fields 13-16 are empty",
-                           pname(p), desc));
+    ctx.report(
+        diag_id::param_scaling_descriptor, ctx.where(p.descriptor),
+        fmt::format("{} descriptor 0x{:04X} announces scaling (bit 2) but fields 13-16 are empty", pname(p), desc));
   }
   const bool links_given = !empty_or_zero(p.multiplier_link) || !empty_or_zero(p.divisor_link) ||
                            !empty_or_zero(p.base_link) || !empty_or_zero(p.offset_link);

@@ -29,10 +29,10 @@ void check_ports(const check_context& ctx) {
     const auto n = p.port_number.as_uint();
     const auto [it, fresh] = first.try_emplace(n, &p);
     if (!fresh) {
-      ctx.report_with_note(diag_id::port_number_duplicate, ctx.where(p.port_number),
-                           fmt::format("Port{} uses port number {}, already used by Port{}", p.number, n,
-                                       it->second->number),
-                           ctx.where(it->second->port_number), fmt::format("Port{} uses it here", it->second->number));
+      ctx.report_with_note(
+          diag_id::port_number_duplicate, ctx.where(p.port_number),
+          fmt::format("Port{} uses port number {}, already used by Port{}", p.number, n, it->second->number),
+          ctx.where(it->second->port_number), fmt::format("Port{} uses it here", it->second->number));
     }
     if (n == 1 && p.type.ok() && network_port_type(p.type.text)) {
       ctx.report(diag_id::port_one_not_backplane, ctx.where(p.port_number),

@@ -3,9 +3,9 @@
 // nothing (rule 23).
 #include <fmt/format.h>
 
+#include "base/plural.hpp"
 #include "check/context.hpp"
 #include "check/names.hpp"
-#include "base/plural.hpp"
 #include "model/visit.hpp"
 
 namespace edsc {
@@ -37,13 +37,14 @@ void check_required_fields(const check_context& ctx, const cst::entry& e, const 
     if (i < e.fields_count) {
       const auto& f = ctx.tree.field_of(e, i);
       if (f.kind == cst::field_kind::empty) {
-        ctx.report(diag_id::required_field_empty, f.where,
-                   fmt::format("field {} ({}) of '{}' is required but empty", i + 1, fd.name, ctx.tree.text(e.keyword)));
+        ctx.report(
+            diag_id::required_field_empty, f.where,
+            fmt::format("field {} ({}) of '{}' is required but empty", i + 1, fd.name, ctx.tree.text(e.keyword)));
       }
     } else if (e.has_equals) {
-      ctx.report(diag_id::required_field_empty, {e.where.end, e.where.end},
-                 fmt::format("'{}' ends before field {} ({}), which is required", ctx.tree.text(e.keyword), i + 1,
-                             fd.name));
+      ctx.report(
+          diag_id::required_field_empty, {e.where.end, e.where.end},
+          fmt::format("'{}' ends before field {} ({}), which is required", ctx.tree.text(e.keyword), i + 1, fd.name));
       return;
     }
   }
@@ -55,9 +56,9 @@ void check_sections(const check_context& ctx) {
     if (!sec.header_ok) continue;  // a malformed header has its syntax error and no name
     if (s.desc == nullptr) {
       if (!s.vendor_specific) {
-        ctx.report(diag_id::unknown_section, sec.name,
-                   fmt::format("unknown section [{}]; vendor-specific sections start with the vendor id and '_'",
-                               s.name));
+        ctx.report(
+            diag_id::unknown_section, sec.name,
+            fmt::format("unknown section [{}]; vendor-specific sections start with the vendor id and '_'", s.name));
       }
       continue;
     }
@@ -84,8 +85,7 @@ void check_raw(const check_context& ctx) {
                              raw.keyword, ctx.tree.text(ctx.tree.sections[raw.section].name)));
     } else if (raw.reason == model::raw_reason::extra_fields) {
       ctx.report(diag_id::too_many_fields, where,
-                 fmt::format("'{}' has more fields than its layout; the extra ones are ignored by tools",
-                             raw.keyword));
+                 fmt::format("'{}' has more fields than its layout; the extra ones are ignored by tools", raw.keyword));
     }
   }
   auto extra = [&](const std::vector<model::value>& fields, std::uint32_t layout, const model::origin& o) {

@@ -77,7 +77,8 @@ void check_structure(const check_context& ctx) {
     const auto& s = t.sections[si];
     if (!s.header_ok) continue;
     check_vendor_prefix(ctx, s.name, "section");
-    const auto first_index = sections.insert(t.text(s.name), si, [&](std::uint32_t i) { return t.text(t.sections[i].name); });
+    const auto first_index =
+        sections.insert(t.text(s.name), si, [&](std::uint32_t i) { return t.text(t.sections[i].name); });
     if (first_index != si) {
       const auto& first = t.sections[first_index];
       ctx.report_with_note(diag_id::duplicate_section, s.name,
@@ -88,12 +89,13 @@ void check_structure(const check_context& ctx) {
     for (std::uint32_t ei = 0; ei < s.entries_count; ++ei) {
       const auto& e = t.entry_of(s, ei);
       check_vendor_prefix(ctx, e.keyword, "keyword");
-      const auto first = keywords.insert(t.text(e.keyword), ei, [&](std::uint32_t i) { return t.text(t.entry_of(s, i).keyword); });
+      const auto first =
+          keywords.insert(t.text(e.keyword), ei, [&](std::uint32_t i) { return t.text(t.entry_of(s, i).keyword); });
       if (first != ei) {
-        ctx.report_with_note(diag_id::duplicate_entry, e.keyword,
-                             fmt::format("entry '{}' appears more than once in [{}]", t.text(e.keyword),
-                                         t.text(s.name)),
-                             t.entry_of(s, first).keyword, "first defined here");
+        ctx.report_with_note(
+            diag_id::duplicate_entry, e.keyword,
+            fmt::format("entry '{}' appears more than once in [{}]", t.text(e.keyword), t.text(s.name)),
+            t.entry_of(s, first).keyword, "first defined here");
       }
     }
   }

@@ -38,8 +38,8 @@ void check_values(const check_context& ctx) {
   model::for_each_value(ctx.dev, [&](const model::value& v) {
     if (!v.invalid()) return;
     std::string raw(ctx.raw(v).substr(0, 60));
-    ctx.report(v.why == model::invalid_reason::bad_base64 ? diag_id::icon_base64 : diag_id::invalid_value,
-               ctx.where(v), fmt::format("'{}'{} {}", raw, ctx.raw(v).size() > 60 ? "..." : "", why_text(v)));
+    ctx.report(v.why == model::invalid_reason::bad_base64 ? diag_id::icon_base64 : diag_id::invalid_value, ctx.where(v),
+               fmt::format("'{}'{} {}", raw, ctx.raw(v).size() > 60 ? "..." : "", why_text(v)));
   });
 }
 

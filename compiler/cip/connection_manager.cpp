@@ -5,8 +5,7 @@ namespace edsc::cip {
 edsc::result<std::uint16_t, encode_error> encode_params16(const net_params& p, const char* field) {
   const auto size = fit<std::uint16_t>(p.size, 0x01FF, field);
   if (!size) return size;
-  return static_cast<std::uint16_t>(*size | (p.variable ? 1u << 9 : 0u) |
-                                    (static_cast<unsigned>(p.priority) << 10) |
+  return static_cast<std::uint16_t>(*size | (p.variable ? 1u << 9 : 0u) | (static_cast<unsigned>(p.priority) << 10) |
                                     (static_cast<unsigned>(p.type) << 13) | (p.redundant_owner ? 1u << 15 : 0u));
 }
 

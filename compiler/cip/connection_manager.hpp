@@ -41,8 +41,8 @@ void put_key(bytes& path, const electronic_key& key);
 
 struct forward_open_request {
   bool large = false;
-  std::uint8_t priority_tick = 0x0A;  // normal priority, 2^10 ms ticks
-  std::uint8_t timeout_ticks = 0x0E;  // 14 ticks: about 14 s for the unconnected request
+  std::uint8_t priority_tick = 0x0A;                         // normal priority, 2^10 ms ticks
+  std::uint8_t timeout_ticks = 0x0E;                         // 14 ticks: about 14 s for the unconnected request
   std::uint32_t ot_connection_id = 0, to_connection_id = 0;  // target/originator choose
   std::uint16_t connection_serial = 0, originator_vendor = 0;
   std::uint32_t originator_serial = 0;

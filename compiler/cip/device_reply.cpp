@@ -4,8 +4,7 @@
 
 namespace edsc::cip {
 
-bytes encap_reply_header_only(command cmd, std::uint32_t session, encap_status status,
-                              const sender_context& context) {
+bytes encap_reply_header_only(command cmd, std::uint32_t session, encap_status status, const sender_context& context) {
   return encode_encap(cmd, session, context, {}, status).value();  // no data: always fits
 }
 
@@ -65,7 +64,8 @@ encoded forward_open_ok_data(const forward_open_reply& r) {
   bytes d;
   put_u32(d, r.ot_connection_id);
   put_u32(d, r.to_connection_id);
-  put_bytes(d, byte_view(connection_triple_data(r.connection_serial, r.originator_vendor, r.originator_serial)).first(8));
+  put_bytes(d,
+            byte_view(connection_triple_data(r.connection_serial, r.originator_vendor, r.originator_serial)).first(8));
   put_u32(d, r.ot_api_us);
   put_u32(d, r.to_api_us);
   put_u8(d, *words);

@@ -160,7 +160,8 @@ decoded<unit_data> decode_send_unit_data(byte_view data, std::size_t base) {
   const auto* d = find_item(items.value(), item::connected_data);
   if (!a || !d) return decode_error{base + 6, "SendUnitData without a connected address and a connected data item"};
   if (a->data.size() != 4)
-    return decode_error{a->offset, fmt::format("a connected address item of {}; 4 expected", plural(a->data.size(), "byte"))};
+    return decode_error{a->offset,
+                        fmt::format("a connected address item of {}; 4 expected", plural(a->data.size(), "byte"))};
   unit_data u;
   reader ra(a->data, a->offset);
   u.connection_id = ra.u32("connection id");

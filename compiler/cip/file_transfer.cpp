@@ -26,7 +26,8 @@ decoded<upload_offer> decode_upload_offer(byte_view data, std::size_t base) {
 
 bool ends_file(packet_type t) { return t == packet_type::last || t == packet_type::first_and_last; }
 
-bytes encode_upload_packet(std::uint8_t number, packet_type type, byte_view data, std::optional<std::uint16_t> checksum) {
+bytes encode_upload_packet(std::uint8_t number, packet_type type, byte_view data,
+                           std::optional<std::uint16_t> checksum) {
   bytes d;
   put_u8(d, number);
   put_u8(d, static_cast<std::uint8_t>(type));

@@ -25,8 +25,9 @@ decoded<io_frame> decode_io_frame(byte_view b, bool run_idle) {
   const auto& it = items.value();
   if (it.size() < 2 || it[0].type != static_cast<std::uint16_t>(item::sequenced_address) ||
       it[1].type != static_cast<std::uint16_t>(item::connected_data))
-    return decode_error{0, "not a class 1 frame: expected a sequenced address item (0x8002) "
-                           "then a connected data item (0x00B1)"};
+    return decode_error{0,
+                        "not a class 1 frame: expected a sequenced address item (0x8002) "
+                        "then a connected data item (0x00B1)"};
   io_frame f;
   reader ra(it[0].data, it[0].offset);
   f.connection_id = ra.u32("connection id");

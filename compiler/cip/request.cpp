@@ -47,8 +47,14 @@ decoded<std::vector<path_segment>> decode_path(byte_view path, std::size_t base)
         s.type = kinds[logical];
         switch (type & 0x03) {
           case 0: s.value = r.u8("logical value"); break;
-          case 1: r.u8("pad byte"); s.value = r.u16("logical value"); break;
-          case 2: r.u8("pad byte"); s.value = r.u32("logical value"); break;
+          case 1:
+            r.u8("pad byte");
+            s.value = r.u16("logical value");
+            break;
+          case 2:
+            r.u8("pad byte");
+            s.value = r.u32("logical value");
+            break;
           default: return decode_error{at, "a reserved logical segment format"};
         }
       } else {

@@ -15,19 +15,29 @@ namespace edsc::cip {
 
 struct request {
   cip::service service{};  // as read: a code codes.def may lack
-  byte_view path;  // padded to words, as sent
+  byte_view path;          // padded to words, as sent
   byte_view data;
 };
 [[nodiscard]] decoded<request> decode_request(byte_view b, std::size_t base);
 
 // One segment of a padded EPATH, the width it was written in forgotten.
-enum class segment_type : std::uint8_t { port, class_id, instance, member, connection_point, attribute, key, data, symbol };
+enum class segment_type : std::uint8_t {
+  port,
+  class_id,
+  instance,
+  member,
+  connection_point,
+  attribute,
+  key,
+  data,
+  symbol
+};
 struct path_segment {
   segment_type type = segment_type::class_id;
-  std::uint32_t value = 0;       // logical value, port number
-  std::uint32_t link = 0;        // port: link address
-  electronic_key key;            // key
-  byte_view data;                // data segment, symbol text
+  std::uint32_t value = 0;  // logical value, port number
+  std::uint32_t link = 0;   // port: link address
+  electronic_key key;       // key
+  byte_view data;           // data segment, symbol text
   bool operator==(const path_segment& o) const {
     return type == o.type && value == o.value && link == o.link &&
            (type != segment_type::symbol || std::equal(data.begin(), data.end(), o.data.begin(), o.data.end()));

@@ -26,7 +26,8 @@ std::string describe_status(std::uint8_t general, std::span<const std::uint16_t>
   // 0x01; elsewhere the words are object-specific and shown as numbers.
   std::size_t i = 0;
   if (general_status{general} == general_status::connection_failure) {
-    out += ", extended " + code_and_text(fmt::format("0x{:04X}", additional[0]), words_of(extended_status{additional[0]}));
+    out +=
+        ", extended " + code_and_text(fmt::format("0x{:04X}", additional[0]), words_of(extended_status{additional[0]}));
     i = 1;
   }
   if (i < additional.size()) {

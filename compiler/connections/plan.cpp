@@ -104,8 +104,7 @@ cip::conn_priority pick_priority(const model::direction_params& d) {
 
 }  // namespace
 
-std::optional<std::string> encode_connection_path(const model::device& dev, const model::epath& p,
-                                                  cip::bytes& out) {
+std::optional<std::string> encode_connection_path(const model::device& dev, const model::epath& p, cip::bytes& out) {
   return encode_path(dev, p, out);
 }
 
@@ -155,8 +154,10 @@ std::vector<connection_plan> plan_connections(const model::device& dev) {
     if (p.to_rpi_us == 0) p.to_rpi_us = p.ot_rpi_us;
     if (p.ot_rpi_us == 0) p.ot_rpi_us = p.to_rpi_us;
     if (p.ot_rpi_us == 0) p.ot_rpi_us = p.to_rpi_us = default_rpi_us;
-    if (!(c.tt.transport_classes & 0x2)) p.not_openable = "it is not a class 1 connection";
-    else if (p.kind.type == model::app_type::listen_only) p.not_openable = "a listen-only connection needs an owner connection that edsc does not hold";
+    if (!(c.tt.transport_classes & 0x2))
+      p.not_openable = "it is not a class 1 connection";
+    else if (p.kind.type == model::app_type::listen_only)
+      p.not_openable = "a listen-only connection needs an owner connection that edsc does not hold";
     const auto* path = dev.path_of(c.path);
     if (p.not_openable.empty() && path == nullptr) p.not_openable = "it has no connection path";
     if (p.not_openable.empty())
@@ -179,7 +180,8 @@ std::vector<connection_plan> plan_connections(const model::device& dev) {
     if (key) cip::put_key(fo.path, *key);
     cip::put_bytes(fo.path, p.app_path);
     if (f.config_size > 0 && f.config_instance != 0)
-      if (auto seg = cip::put_data_segment(fo.path, config_data(dev, emit::assembly_of(dev, c.target_config_format), f.config_size));
+      if (auto seg = cip::put_data_segment(
+              fo.path, config_data(dev, emit::assembly_of(dev, c.target_config_format), f.config_size));
           !seg && p.not_openable.empty())
         p.not_openable = "its configuration data does not fit a Forward_Open: " + seg.error().what();
     out.push_back(std::move(p));
@@ -199,7 +201,8 @@ std::optional<std::uint32_t> given_size(const model::device& dev, const model::a
 
 std::vector<assembly_target> plan_assemblies(const model::device& dev) {
   std::vector<assembly_target> out;
-  auto add = [&](const model::assembly* a, std::uint32_t instance, const model::value& path, const model::origin& entry) {
+  auto add = [&](const model::assembly* a, std::uint32_t instance, const model::value& path,
+                 const model::origin& entry) {
     if (a == nullptr || instance == 0) return;
     for (const auto& t : out)
       if (t.assem == a) return;

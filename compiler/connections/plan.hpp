@@ -24,7 +24,7 @@ struct connection_plan {
   emit::eip_connection_facts facts;
   std::uint32_t ot_rpi_us = 0, to_rpi_us = 0;
   bool ot_run_idle = false, to_run_idle = false;
-  model::app_kind kind;  // the one rule (model::classify) over field 1 and the configuration
+  model::app_kind kind;               // the one rule (model::classify) over field 1 and the configuration
   cip::forward_open_request request;  // serials left to the caller
   cip::bytes app_path;                // without key and data (for Forward_Close)
   std::string not_openable;           // why edsc does not open it; empty: it does
@@ -42,7 +42,7 @@ struct assembly_target {
   // Bytes; none when the EDS gives no size (an empty size field and no
   // member of any bits), which is not a size of 0.
   std::optional<std::uint32_t> eds_size;
-  span named_at;               // the path that gives the instance (the assembly's own, or a connection's)
+  span named_at;  // the path that gives the instance (the assembly's own, or a connection's)
 };
 [[nodiscard]] std::vector<assembly_target> plan_assemblies(const model::device& dev);
 

@@ -6,9 +6,7 @@ namespace edsc::cst {
 
 namespace {
 
-bool is_hex(char c) {
-  return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F');
-}
+bool is_hex(char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'); }
 
 // How a byte is named in a message: printable ASCII as itself, the rest as hex,
 // so a diagnostic never carries raw binary to the terminal.
@@ -55,8 +53,7 @@ void builder::stray(span s) {
   close_entry(false);
   push(token_kind::skipped, s);
   report(diag_id::syntax_stray, s,
-         fmt::format("expected a section header, an entry or a comment, found {}",
-                     describe(t_.text(s))));
+         fmt::format("expected a section header, an entry or a comment, found {}", describe(t_.text(s))));
 }
 
 void builder::skipped(span s) { push(token_kind::skipped, s); }
@@ -101,14 +98,12 @@ void builder::bad_header_body(span s) {
   const auto text = t_.source->text();
   const bool closed = s.end < text.size() && text[s.end] == ']';
   if (!closed) {
-    report(diag_id::syntax_section_header, {s.end, s.end},
-           "expected ']' to close the section header", "]");
+    report(diag_id::syntax_section_header, {s.end, s.end}, "expected ']' to close the section header", "]");
     return;
   }
   // Name the byte that made the header malformed, not the first of the name.
   const auto body = t_.text(s);
-  const auto bad = body.find_first_not_of(
-      " abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_./\\-");
+  const auto bad = body.find_first_not_of(" abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_./\\-");
   if (bad == std::string_view::npos) {
     report(diag_id::syntax_section_header, s, "empty section name");
   } else {
@@ -161,8 +156,7 @@ void builder::comma(span s) {
 }
 
 void builder::missing_comma() {
-  report(diag_id::syntax_missing_comma, after_last_significant(),
-         "expected ',' between two field values", ",");
+  report(diag_id::syntax_missing_comma, after_last_significant(), "expected ',' between two field values", ",");
   begin_field();
 }
 
@@ -223,31 +217,37 @@ void builder::check_escapes(span s) {
     std::size_t len = 2;
     bool ok = true;
     switch (text[i]) {
-      case '\\': case '"': case '\'': case '?': case 'a': case 'b':
-      case 'f': case 'n': case 'r': case 't': case 'v':
-        break;
+      case '\\':
+      case '"':
+      case '\'':
+      case '?':
+      case 'a':
+      case 'b':
+      case 'f':
+      case 'n':
+      case 'r':
+      case 't':
+      case 'v': break;
       case 'x':
         ok = i + 2 < text.size() && is_hex(text[i + 1]) && is_hex(text[i + 2]);
         len = ok ? 4 : 2;
         break;
       case 'u':
-        ok = wide && i + 4 < text.size() && is_hex(text[i + 1]) && is_hex(text[i + 2]) &&
-             is_hex(text[i + 3]) && is_hex(text[i + 4]);
+        ok = wide && i + 4 < text.size() && is_hex(text[i + 1]) && is_hex(text[i + 2]) && is_hex(text[i + 3]) &&
+             is_hex(text[i + 4]);
         len = ok ? 6 : 2;
         if (!wide) {
-          const span where{s.begin + static_cast<std::uint32_t>(start), s.begin + static_cast<std::uint32_t>(start + 2)};
+          const span where{s.begin + static_cast<std::uint32_t>(start),
+                           s.begin + static_cast<std::uint32_t>(start + 2)};
           report(diag_id::syntax_invalid_escape, where, "'\\u' escapes are only valid in wide L\"...\" strings");
           continue;
         }
         break;
-      default:
-        ok = false;
+      default: ok = false;
     }
-    const span where{s.begin + static_cast<std::uint32_t>(start),
-                     s.begin + static_cast<std::uint32_t>(start + len)};
+    const span where{s.begin + static_cast<std::uint32_t>(start), s.begin + static_cast<std::uint32_t>(start + len)};
     if (!ok) {
-      report(diag_id::syntax_invalid_escape, where,
-             fmt::format("invalid escape sequence '{}'", t_.text(where)));
+      report(diag_id::syntax_invalid_escape, where, fmt::format("invalid escape sequence '{}'", t_.text(where)));
     }
     i = start + len - 1;
   }
@@ -336,8 +336,7 @@ void builder::too_deep(span s) {
   add_value_token(field_kind::dataset, tok, s);
   t_.fields[current_field_].closed = false;
   entry_too_deep_ = true;
-  report(diag_id::syntax_nesting_too_deep, s,
-         "datasets nested too deeply; edsc accepts at most 16 levels of '{'");
+  report(diag_id::syntax_nesting_too_deep, s, "datasets nested too deeply; edsc accepts at most 16 levels of '{'");
 }
 
 // ---- closing -----------------------------------------------------------------------

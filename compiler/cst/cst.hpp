@@ -17,7 +17,7 @@ enum class field_kind : std::uint8_t { empty, string, bare, dataset };
 struct field {
   span where;
   field_kind kind = field_kind::empty;
-  bool closed = true;  // dataset with its `}` (next to `kind`: no padding hole)
+  bool closed = true;             // dataset with its `}` (next to `kind`: no padding hole)
   std::uint32_t first_token = 0;  // significant tokens of the value: [first, end)
   std::uint32_t end_token = 0;
   // Strings: their pieces' token indices in cst::pieces; datasets: their
@@ -35,7 +35,7 @@ static_assert(sizeof(field) == 28);
 // `Keyword = field, field, ... ;`
 struct entry {
   span keyword;
-  span where;  // keyword to `;` (or to the last token it owns when `;` is missing)
+  span where;                    // keyword to `;` (or to the last token it owns when `;` is missing)
   std::uint32_t section = npos;  // index into cst::sections, npos before the first header
   std::uint32_t first_token = 0;
   std::uint32_t end_token = 0;
@@ -79,12 +79,8 @@ struct tree {
   [[nodiscard]] const field& child_of(const field& f, std::uint32_t i) const {
     return fields[field_lists[f.list_begin + i]];
   }
-  [[nodiscard]] token piece_of(const field& f, std::uint32_t i) const {
-    return tokens[pieces[f.list_begin + i]];
-  }
-  [[nodiscard]] const entry& entry_of(const section& s, std::uint32_t i) const {
-    return entries[s.entries_begin + i];
-  }
+  [[nodiscard]] token piece_of(const field& f, std::uint32_t i) const { return tokens[pieces[f.list_begin + i]]; }
+  [[nodiscard]] const entry& entry_of(const section& s, std::uint32_t i) const { return entries[s.entries_begin + i]; }
 };
 
 // The file again, byte for byte, written by walking the tree.

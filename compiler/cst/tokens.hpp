@@ -25,11 +25,11 @@ enum class token_kind : std::uint8_t {
   equals,
   comma,
   semicolon,
-  string,        // one quoted piece, quotes and `L` prefix included
-  bare,          // unquoted value: number, date, reference, keyword...
+  string,  // one quoted piece, quotes and `L` prefix included
+  bare,    // unquoted value: number, date, reference, keyword...
   lbrace,
   rbrace,
-  skipped,       // bytes the parser stepped over while recovering from an error
+  skipped,  // bytes the parser stepped over while recovering from an error
 };
 
 // The trivia kinds come first: one comparison per token.
@@ -58,9 +58,17 @@ class token_list {
     using reference = token;
     iterator(const token_list* l, std::size_t i) : list_(l), i_(i) {}
     token operator*() const { return (*list_)[i_]; }
-    iterator& operator++() { ++i_; return *this; }
-    iterator operator++(int) { auto old = *this; ++i_; return old; }
+    iterator& operator++() {
+      ++i_;
+      return *this;
+    }
+    iterator operator++(int) {
+      auto old = *this;
+      ++i_;
+      return old;
+    }
     friend bool operator==(const iterator& a, const iterator& b) { return a.i_ == b.i_; }
+
    private:
     const token_list* list_;
     std::size_t i_;

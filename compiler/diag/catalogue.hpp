@@ -19,7 +19,7 @@ enum class diag_id : std::uint16_t {
 
 struct rule_info {
   diag_id id;
-  std::string_view name;   // stable id printed as [name] and used by -W<name>
+  std::string_view name;  // stable id printed as [name] and used by -W<name>
   severity default_level;
   std::string_view group;  // -W group
   std::string_view summary;

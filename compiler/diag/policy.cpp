@@ -34,8 +34,10 @@ std::optional<std::string> diag_policy::add_flag(std::string_view flag) {
     const bool on = flag == "error";
     for (const auto& r : all_rules()) {
       auto& st = rules_[static_cast<std::size_t>(r.id)];
-      if (!on) st.promote = to_error::no;
-      else if (r.default_level == severity::warning) st.promote = to_error::yes;
+      if (!on)
+        st.promote = to_error::no;
+      else if (r.default_level == severity::warning)
+        st.promote = to_error::yes;
     }
     return std::nullopt;
   }

@@ -53,10 +53,8 @@ std::string render_json(const std::vector<file_report>& files, const report_tota
     jfiles.push_back(json{{"path", src.path()}, {"diagnostics", std::move(jdiags)}});
   }
   out["files"] = std::move(jfiles);
-  out["summary"] = json{{"files", totals.files},
-                        {"errors", totals.errors},
-                        {"warnings", totals.warnings},
-                        {"notes", totals.notes}};
+  out["summary"] =
+      json{{"files", totals.files}, {"errors", totals.errors}, {"warnings", totals.warnings}, {"notes", totals.notes}};
   return dump(out) + "\n";
 }
 

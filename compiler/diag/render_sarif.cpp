@@ -84,12 +84,8 @@ std::string friendly_name(std::string_view id) {
 json region_of(const source_file& src, span s) {
   const auto a = src.position(s.begin);
   const auto b = src.position(s.end);
-  return json{{"startLine", a.line},
-              {"startColumn", a.column},
-              {"endLine", b.line},
-              {"endColumn", b.column},
-              {"byteOffset", s.begin},
-              {"byteLength", s.size()}};
+  return json{{"startLine", a.line},   {"startColumn", a.column}, {"endLine", b.line},
+              {"endColumn", b.column}, {"byteOffset", s.begin},   {"byteLength", s.size()}};
 }
 
 json location_of(const source_file& src, span s, bool have_root) {
@@ -149,15 +145,14 @@ std::string render_sarif(const std::vector<file_report>& files) {
       if (!d.fixits.empty()) {
         json replacements = json::array();
         for (const auto& fx : d.fixits) {
-          replacements.push_back(json{
-              {"deletedRegion", {{"byteOffset", fx.range.begin}, {"byteLength", fx.range.size()}}},
-              {"insertedContent", {{"text", fx.replacement}}}});
+          replacements.push_back(
+              json{{"deletedRegion", {{"byteOffset", fx.range.begin}, {"byteLength", fx.range.size()}}},
+                   {"insertedContent", {{"text", fx.replacement}}}});
         }
-        r["fixes"] = json::array({json{
-            {"description", {{"text", "apply the certain fix"}}},
-            {"artifactChanges",
-             json::array({json{{"artifactLocation", artifact_location(src.path(), have_root)},
-                               {"replacements", std::move(replacements)}}})}}});
+        r["fixes"] = json::array(
+            {json{{"description", {{"text", "apply the certain fix"}}},
+                  {"artifactChanges", json::array({json{{"artifactLocation", artifact_location(src.path(), have_root)},
+                                                        {"replacements", std::move(replacements)}}})}}});
       }
       results.push_back(std::move(r));
     }

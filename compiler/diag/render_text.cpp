@@ -65,8 +65,8 @@ void render_location(const source_file& src, std::string_view path, span where, 
   const auto pos = src.position(where.begin);
   const char* bold = style.color ? "\033[1m" : "";
   const char* reset = style.color ? "\033[0m" : "";
-  out += fmt::format("{}{}:{}:{}: {}{}:{} {}{}", bold, path, pos.line, pos.column,
-                     style.color ? colour_of(level) : "", to_string(level), reset, bold, message);
+  out += fmt::format("{}{}:{}:{}: {}{}:{} {}{}", bold, path, pos.line, pos.column, style.color ? colour_of(level) : "",
+                     to_string(level), reset, bold, message);
   if (!id.empty()) out += fmt::format(" [{}]", id);
   out += reset;
   out += '\n';
@@ -77,7 +77,8 @@ void render_location(const source_file& src, std::string_view path, span where, 
   // The window of a long line ends between characters, never inside one.
   const auto whole = [&](std::uint32_t end) { return static_cast<std::uint32_t>(utf8::boundary_before(line, end)); };
   const std::uint32_t first = caret > window_bytes ? whole(caret - window_bytes) : 0;
-  const std::uint32_t last = whole(std::min<std::uint32_t>(static_cast<std::uint32_t>(line.size()), caret + window_bytes));
+  const std::uint32_t last =
+      whole(std::min<std::uint32_t>(static_cast<std::uint32_t>(line.size()), caret + window_bytes));
   const auto shown = show(line.substr(first, last - first));
   const std::string prefix = first > 0 ? "..." : "";
   const std::string suffix = last < line.size() ? "..." : "";
@@ -100,8 +101,8 @@ void render_location(const source_file& src, std::string_view path, span where, 
   for (const auto& f : fixits) {
     const auto fpos = src.position(f.range.begin);
     if (fpos.line != pos.line || f.replacement.find('\n') != std::string::npos) continue;
-    out += blank_gutter + "| " + (style.color ? "\033[32m" : "") +
-           std::string(column_at(fpos.column - 1), ' ') + f.replacement + reset + '\n';
+    out += blank_gutter + "| " + (style.color ? "\033[32m" : "") + std::string(column_at(fpos.column - 1), ' ') +
+           f.replacement + reset + '\n';
   }
 }
 

@@ -24,8 +24,8 @@ std::string render_rules_markdown() {
       "where the file is certainly wrong, and each error rule states its basis.\n\n"
       "| id | severity | group | summary |\n|---|---|---|---|\n";
   for (const auto& r : all_rules()) {
-    out += fmt::format("| [`{}`](#{}) | {} | {} | {} |\n", r.name, r.name, to_string(r.default_level), r.group,
-                       r.summary);
+    out +=
+        fmt::format("| [`{}`](#{}) | {} | {} | {} |\n", r.name, r.name, to_string(r.default_level), r.group, r.summary);
   }
   for (const auto& r : all_rules()) out += "\n" + render_rule_markdown(r);
   return out;

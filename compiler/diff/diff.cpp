@@ -44,8 +44,9 @@ void compare_identity(context& c) {
   const bool same_major = keys.before.major == keys.after.major;
   const bool same_minor = keys.before.minor == keys.after.minor;
   keys.exact_match = same_product && same_major && same_minor;
-  keys.compatible_match = same_product && same_major &&
-                          (same_minor || (keys.before.minor && keys.after.minor && *keys.after.minor > *keys.before.minor));
+  keys.compatible_match =
+      same_product && same_major &&
+      (same_minor || (keys.before.minor && keys.after.minor && *keys.after.minor > *keys.before.minor));
 
   struct field {
     const value model::device_info::*slot;
@@ -80,9 +81,8 @@ void compare_identity(context& c) {
   } else if (!same(c.a, x.min_rev, c.b, y.min_rev)) {
     const bool newer = keys.compatible_match;
     const bool exact = c.opt.assumed == keying::exact;
-    auto& d = newer ? c.add(group::identity, exact ? impact::breaking : impact::additive,
-                            "identity-minor-revision", "[Device] MinRev",
-                            fmt::format("minor revision raised: {} -> {}", was, now),
+    auto& d = newer ? c.add(group::identity, exact ? impact::breaking : impact::additive, "identity-minor-revision",
+                            "[Device] MinRev", fmt::format("minor revision raised: {} -> {}", was, now),
                             "a scanner keyed to compatible revision accepts the node; one keyed to exact match "
                             "reports it as Mismatch until its key is changed to the new revision")
                     : c.add(group::identity, impact::breaking, "identity-minor-revision", "[Device] MinRev",

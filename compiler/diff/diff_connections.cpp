@@ -39,16 +39,17 @@ void compare_pair(context& c, const connection& p, const connection& q, const em
                                    std::tuple{&p.params, &q.params, "connection parameters"}}) {
     if (same(c.a, *u, c.b, *v)) continue;
     const auto ch = bits(*u, *v);
-    const bool format_changed = u == &p.params && p.decoded && q.decoded &&
-                                (p.cp.ot.real_time_format != q.cp.ot.real_time_format ||
-                                 p.cp.to.real_time_format != q.cp.to.real_time_format);
+    const bool format_changed =
+        u == &p.params && p.decoded && q.decoded &&
+        (p.cp.ot.real_time_format != q.cp.ot.real_time_format || p.cp.to.real_time_format != q.cp.to.real_time_format);
     const bool lost = ch.lost != 0 || format_changed || !u->is_integer() || !v->is_integer();
     add(lost ? impact::breaking : impact::additive, u == &p.trigger ? "connection-trigger" : "connection-params",
         fmt::format("{} {} -> {}", what, shown(c.a, *u), shown(c.b, *v)),
         lost ? (format_changed ? std::string("the real-time format (run/idle header, heartbeat) changed: an originator "
                                              "configured with the old file frames the data differently and is refused")
                                : fmt::format("options a configured originator may use were withdrawn (bits 0x{:X}): "
-                                             "its connection request can be refused", ch.lost))
+                                             "its connection request can be refused",
+                                             ch.lost))
              : fmt::format("new options (bits 0x{:X}); what was configured is still offered", ch.gained),
         *u, *v);
   }
@@ -57,10 +58,10 @@ void compare_pair(context& c, const connection& p, const connection& q, const em
     const char* what;
     const value *u, *v;
   };
-  for (const auto& s : {sized{f0.output_size, f1.output_size, "O->T size", &p.ot_size, &q.ot_size},
-                        sized{f0.input_size, f1.input_size, "T->O size", &p.to_size, &q.to_size},
-                        sized{f0.config_size, f1.config_size, "configuration size", &p.target_config_size,
-                              &q.target_config_size}}) {
+  for (const auto& s :
+       {sized{f0.output_size, f1.output_size, "O->T size", &p.ot_size, &q.ot_size},
+        sized{f0.input_size, f1.input_size, "T->O size", &p.to_size, &q.to_size},
+        sized{f0.config_size, f1.config_size, "configuration size", &p.target_config_size, &q.target_config_size}}) {
     if (s.a == s.b) continue;
     add(impact::breaking, "connection-size", fmt::format("{} {} -> {} bytes", s.what, s.a, s.b),
         "an originator configured with the old size is refused (invalid connection size), and data mapped after "
@@ -82,8 +83,10 @@ void compare_pair(context& c, const connection& p, const connection& q, const em
   if (instances_same)
     field(p.path, q.path, impact::breaking, "connection-path", "path",
           "an originator configured with the old path asks for something the device may no longer serve");
-  field(p.ot_rpi, q.ot_rpi, impact::cosmetic, "connection-rpi", "O->T RPI", "the interval a tool proposes; configured intervals stay");
-  field(p.to_rpi, q.to_rpi, impact::cosmetic, "connection-rpi", "T->O RPI", "the interval a tool proposes; configured intervals stay");
+  field(p.ot_rpi, q.ot_rpi, impact::cosmetic, "connection-rpi", "O->T RPI",
+        "the interval a tool proposes; configured intervals stay");
+  field(p.to_rpi, q.to_rpi, impact::cosmetic, "connection-rpi", "T->O RPI",
+        "the interval a tool proposes; configured intervals stay");
   field(p.name, q.name, impact::cosmetic, "connection-name", "name", "tools show the new name");
   field(p.help, q.help, impact::cosmetic, "connection-help", "help text", "documentation only");
   for (const auto slot : {&connection::ot_format, &connection::to_format, &connection::proxy_config_size,

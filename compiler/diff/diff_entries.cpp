@@ -42,7 +42,8 @@ std::map<std::string, entry_view> entries_of(const device& d, const std::unorder
     // `A = 1;` and `A = 1, ;` say the same.
     while (!view.fields.empty() && !view.fields.back()->present()) view.fields.pop_back();
     const auto& ce = d.tree->entries[e];
-    view.section = ce.section == cst::npos ? std::string() : std::string(d.tree->text(d.tree->sections[ce.section].name));
+    view.section =
+        ce.section == cst::npos ? std::string() : std::string(d.tree->text(d.tree->sections[ce.section].name));
     view.keyword = std::string(d.tree->text(ce.keyword));
     auto k = lower(view.section) + '|' + lower(view.keyword);
     k += fmt::format("#{}", seen[k]++);

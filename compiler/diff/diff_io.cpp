@@ -4,8 +4,8 @@
 
 #include <fmt/format.h>
 
-#include "cst/cst.hpp"
 #include "base/plural.hpp"
+#include "cst/cst.hpp"
 #include "diff/context.hpp"
 #include "diff/pairing.hpp"
 
@@ -95,7 +95,8 @@ struct io_pass {
     const auto from = size_of(p), to = size_of(q);
     std::string message = fmt::format("{} -> {}", bytes(from), bytes(to));
     if (!same(c.a, p.significant_bits, c.b, q.significant_bits))
-      message += fmt::format(" (significant bits {} -> {})", shown(c.a, p.significant_bits), shown(c.b, q.significant_bits));
+      message +=
+          fmt::format(" (significant bits {} -> {})", shown(c.a, p.significant_bits), shown(c.b, q.significant_bits));
     const char* image = q.output ? "output" : "input";
     const char* flow = q.output ? "sends" : "receives";
     std::string why;
@@ -170,7 +171,8 @@ struct io_pass {
       c.cover({}, q.from);
       if (m.paired[j]) continue;
       auto& d = c.add(group::io, impact::additive, "io-data-added", section + ' ' + data_label(q),
-                      fmt::format("added ({})", bytes(size_of(q))), "new data a scanner may choose; nothing configured changes");
+                      fmt::format("added ({})", bytes(size_of(q))),
+                      "new data a scanner may choose; nothing configured changes");
       d.after = at(q.from, bytes(size_of(q)));
     }
   }
@@ -259,8 +261,10 @@ struct io_pass {
     for (const auto* list : {&io.inputs, &io.outputs})
       for (const auto& d : *list) {
         sets += (sets.empty() ? "" : ", ") + data_label(d) + " (" + bytes(size_of(d)) + ")";
-        if (added) c.cover({}, d.from);
-        else c.cover(d.from, {});
+        if (added)
+          c.cover({}, d.from);
+        else
+          c.cover(d.from, {});
         if (keeps_old) {
           const auto* old = find(c.a.io, d.output, d.number);
           keeps_old = old != nullptr && size_of(*old) == size_of(d);
@@ -276,8 +280,9 @@ struct io_pass {
     else
       why = added ? "DeviceNet I/O is now described; nothing configured changes"
                   : "scanners can no longer configure this node's DeviceNet I/O from the file";
-    auto& d = c.add(group::io, added ? impact::additive : impact::breaking, added ? "io-section-added" : "io-section-removed",
-                    section, fmt::format("{}{}", added ? "added" : "removed", sets.empty() ? "" : ": " + sets), why);
+    auto& d =
+        c.add(group::io, added ? impact::additive : impact::breaking, added ? "io-section-added" : "io-section-removed",
+              section, fmt::format("{}{}", added ? "added" : "removed", sets.empty() ? "" : ": " + sets), why);
     const auto where = model::origin{model::none, dev.tree->sections[io.section].header};
     (added ? d.after : d.before) = at(where, section);
   }

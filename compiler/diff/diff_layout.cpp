@@ -41,8 +41,10 @@ std::vector<placed> layout(const device& d, const assembly& a, const std::vector
     p.m = &m;
     p.offset = offset;
     p.bits = emit::number_or_param_default(d, m.size);
-    if (offset && p.bits) offset = *offset + *p.bits;
-    else offset.reset();
+    if (offset && p.bits)
+      offset = *offset + *p.bits;
+    else
+      offset.reset();
     if (!m.ref.present()) continue;  // padding
     if (const auto* r = m.ref.as_ref(); r != nullptr && r->kind == schema::ref_kind::param && r->resolved()) {
       const auto& q = d.params[r->target];
@@ -63,7 +65,8 @@ std::vector<placed> layout(const device& d, const assembly& a, const std::vector
 
 std::string label(const device& d, const assembly& a) {
   const auto name = text_of(a.name);
-  const auto kw = a.from.entry != model::none ? d.tree->text(d.tree->entries[a.from.entry].keyword) : std::string_view("Assem");
+  const auto kw =
+      a.from.entry != model::none ? d.tree->text(d.tree->entries[a.from.entry].keyword) : std::string_view("Assem");
   return name.empty() ? std::string(kw) : fmt::format("{} \"{}\"", kw, brief(name, 40));
 }
 

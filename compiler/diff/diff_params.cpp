@@ -29,7 +29,8 @@ std::string content(const device& d, const param& p, bool with_text) {
     if (with_text || !is_text_slot(slot)) s += key(d, p.*slot) + '|';
   for (const auto& v : p.extra) s += key(d, v) + '|';
   if (p.enum_index != model::none)
-    for (const auto& e : d.enums[p.enum_index].pairs) s += key(d, e.val) + '=' + (with_text ? key(d, e.text) : "") + ';';
+    for (const auto& e : d.enums[p.enum_index].pairs)
+      s += key(d, e.val) + '=' + (with_text ? key(d, e.text) : "") + ';';
   if (p.enum_par_index != model::none)
     for (const auto& e : d.enum_pars[p.enum_par_index].strings) s += (with_text ? key(d, e) : "") + ';';
   return s;
@@ -108,8 +109,10 @@ void compare_enum(context& c, const param& p, const param& q, const std::string&
   std::vector<std::string> removed, added, renamed;
   for (const auto& [v, t] : old_e) {
     const auto it = new_e.find(v);
-    if (it == new_e.end()) removed.push_back(fmt::format("{} {}", v, t));
-    else if (it->second != t) renamed.push_back(fmt::format("{} {} -> {}", v, t, it->second));
+    if (it == new_e.end())
+      removed.push_back(fmt::format("{} {}", v, t));
+    else if (it->second != t)
+      renamed.push_back(fmt::format("{} {} -> {}", v, t, it->second));
   }
   for (const auto& [v, t] : new_e)
     if (!old_e.count(v)) added.push_back(fmt::format("{} {}", v, t));
@@ -162,14 +165,15 @@ void compare_descriptor(context& c, const param& p, const param& q, const std::s
                                   fmt::format("became read-only (descriptor {} -> {})", shown(c.a, p.descriptor),
                                               shown(c.b, q.descriptor)),
                                   "a configuration that writes it is refused by the device")
-            : now_writable ? c.add(group::parameters, impact::additive, "param-writable", subject,
-                                   fmt::format("became writable (descriptor {} -> {})", shown(c.a, p.descriptor),
-                                               shown(c.b, q.descriptor)),
-                                   "configurations may now set it")
-                           : c.add(group::parameters, impact::cosmetic, "param-descriptor", subject,
-                                   fmt::format("descriptor {} -> {}", shown(c.a, p.descriptor), shown(c.b, q.descriptor)),
-                                   "how tools present the value (scaling, enumeration, monitoring); the value a "
-                                   "configuration holds is unchanged");
+            : now_writable
+                ? c.add(group::parameters, impact::additive, "param-writable", subject,
+                        fmt::format("became writable (descriptor {} -> {})", shown(c.a, p.descriptor),
+                                    shown(c.b, q.descriptor)),
+                        "configurations may now set it")
+                : c.add(group::parameters, impact::cosmetic, "param-descriptor", subject,
+                        fmt::format("descriptor {} -> {}", shown(c.a, p.descriptor), shown(c.b, q.descriptor)),
+                        "how tools present the value (scaling, enumeration, monitoring); the value a "
+                        "configuration holds is unchanged");
   d.before = at(c.a, p.descriptor);
   d.after = at(c.b, q.descriptor);
 }
@@ -197,12 +201,12 @@ void compare_pair(context& c, const param& p, const param& q) {
     return x.type ? fmt::format("{} ({})", x.type->name, shown(d, x.data_type)) : shown(d, x.data_type);
   };
   if (!same(c.a, p.data_type, c.b, q.data_type)) {
-    auto& d = c.add(group::parameters, same_encoding ? impact::cosmetic : impact::breaking, "param-type", subject,
-                    fmt::format("data type {} -> {}", type_name(c.a, p), type_name(c.b, q)),
-                    same_encoding
-                        ? "same size and encoding: tools show the value differently (hex or decimal); configured "
-                          "values stay valid"
-                        : "a configured value is sent in the old type's encoding and is refused or misread");
+    auto& d =
+        c.add(group::parameters, same_encoding ? impact::cosmetic : impact::breaking, "param-type", subject,
+              fmt::format("data type {} -> {}", type_name(c.a, p), type_name(c.b, q)),
+              same_encoding ? "same size and encoding: tools show the value differently (hex or decimal); configured "
+                              "values stay valid"
+                            : "a configured value is sent in the old type's encoding and is refused or misread");
     d.before = at(c.a, p.data_type);
     d.after = at(c.b, q.data_type);
   }

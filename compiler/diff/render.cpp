@@ -20,8 +20,10 @@ std::string safe(std::string_view s) {
   std::string out;
   for (const char ch : emit::detail::to_utf8(s)) {
     const auto c = static_cast<unsigned char>(ch);
-    if (c < 0x20 || c == 0x7F) out += fmt::format("<{:02X}>", c);
-    else out += ch;
+    if (c < 0x20 || c == 0x7F)
+      out += fmt::format("<{:02X}>", c);
+    else
+      out += ch;
   }
   return out;
 }
@@ -73,16 +75,18 @@ std::string render_text(const result& r, const analysis& before, const analysis&
   const char* reset = style.color ? "\033[0m" : "";
   std::string out;
   if (r.differences.empty()) {
-    return fmt::format("{} and {}: no difference between the two models\n", before.source->path(), after.source->path());
+    return fmt::format("{} and {}: no difference between the two models\n", before.source->path(),
+                       after.source->path());
   }
   const auto& k = r.keys;
   out += fmt::format("{}identity{}: {}{}\n", bold, reset, identity_text(k.before),
                      k.exact_match && k.compatible_match && identity_text(k.before) == identity_text(k.after)
                          ? " (unchanged)"
                          : " -> " + identity_text(k.after));
-  out += fmt::format("{}keying{}: a scanner configured with the old file says {} when keyed to exact match, {} when "
-                     "keyed to compatible revision\n",
-                     bold, reset, k.exact_match ? "Match" : "Mismatch", k.compatible_match ? "Match" : "Mismatch");
+  out += fmt::format(
+      "{}keying{}: a scanner configured with the old file says {} when keyed to exact match, {} when "
+      "keyed to compatible revision\n",
+      bold, reset, k.exact_match ? "Match" : "Mismatch", k.compatible_match ? "Match" : "Mismatch");
   for (const auto g : all_groups) {
     bool header = false;
     for (const auto& d : r.differences) {
@@ -101,8 +105,7 @@ std::string render_text(const result& r, const analysis& before, const analysis&
     }
   }
   out += fmt::format("\n{}: {} breaking, {} additive, {} cosmetic\n", plural(r.differences.size(), "difference"),
-                     r.count(impact::breaking), r.count(impact::additive),
-                     r.count(impact::cosmetic));
+                     r.count(impact::breaking), r.count(impact::additive), r.count(impact::cosmetic));
   return out;
 }
 

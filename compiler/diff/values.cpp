@@ -4,8 +4,8 @@
 
 #include <fmt/format.h>
 
-#include "diff/context.hpp"
 #include "base/utf8.hpp"
+#include "diff/context.hpp"
 
 namespace edsc::diff::detail {
 
@@ -40,10 +40,14 @@ std::string collapse(std::string_view s, bool upper) {
 std::string quoted(std::string_view s) {
   std::string out = "\"";
   for (const char ch : s) {
-    if (ch == '\n') out += "\\n";
-    else if (ch == '"' || ch == '\\') out += '\\', out += ch;
-    else if (static_cast<unsigned char>(ch) < 0x20) out += fmt::format("\\x{:02X}", static_cast<unsigned char>(ch));
-    else out += ch;
+    if (ch == '\n')
+      out += "\\n";
+    else if (ch == '"' || ch == '\\')
+      out += '\\', out += ch;
+    else if (static_cast<unsigned char>(ch) < 0x20)
+      out += fmt::format("\\x{:02X}", static_cast<unsigned char>(ch));
+    else
+      out += ch;
   }
   return out + '"';
 }

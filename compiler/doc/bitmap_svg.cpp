@@ -15,14 +15,14 @@ namespace {
 
 constexpr int row_h = 30, min_gutter = 78, top = 22, right_pad = 4;
 constexpr double char_w = 6.4;  // average width of an 11px sans-serif character
-constexpr const char* palette[] = {"#cfe3ff", "#ffe0b3", "#d3f0cf", "#f7d2e8", "#e2d8ff",
-                                   "#fff0a6", "#c8eeee", "#ffd3cc"};
-constexpr const char* palette_edge[] = {"#5b8fd6", "#d9964a", "#5fa65a", "#c46fa0", "#8c74d6",
-                                        "#c4a826", "#3f9d9d", "#d0705f"};
+constexpr const char* palette[] = {"#cfe3ff", "#ffe0b3", "#d3f0cf", "#f7d2e8",
+                                   "#e2d8ff", "#fff0a6", "#c8eeee", "#ffd3cc"};
+constexpr const char* palette_edge[] = {"#5b8fd6", "#d9964a", "#5fa65a", "#c46fa0",
+                                        "#8c74d6", "#c4a826", "#3f9d9d", "#d0705f"};
 
 struct row {
-  std::uint32_t byte = 0;     // first byte the row stands for
-  std::uint32_t last = 0;     // last byte (== byte unless folded)
+  std::uint32_t byte = 0;            // first byte the row stands for
+  std::uint32_t last = 0;            // last byte (== byte unless folded)
   const bit_block* whole = nullptr;  // folded rows: the block that fills them
 };
 
@@ -99,12 +99,14 @@ void block_rect(std::string& out, const bit_block& b, int x, int y, int w, const
 // Styled by class, with the rules inside the SVG: the file stands alone, and
 // inline in a page the same rules apply (prefixed so they touch nothing else).
 std::string svg_style(const std::string& id) {
-  std::string css = "<style>.bitmap text{font:11px system-ui,-apple-system,'Segoe UI',Roboto,sans-serif;fill:#1f2328}"
-                    ".bitmap .bm-h{fill:#6a737d}.bitmap .bm-e{text-anchor:end}.bitmap g text,.bitmap .bm-m{text-anchor:middle}"
-                    ".bitmap rect{rx:3px}.bitmap .bm-row{fill:#fafbfc;stroke:#e1e4e8;rx:0}"
-                    ".bitmap .bm-p text{fill:#5f6368;font-style:italic}";
+  std::string css =
+      "<style>.bitmap text{font:11px system-ui,-apple-system,'Segoe UI',Roboto,sans-serif;fill:#1f2328}"
+      ".bitmap .bm-h{fill:#6a737d}.bitmap .bm-e{text-anchor:end}.bitmap g text,.bitmap .bm-m{text-anchor:middle}"
+      ".bitmap rect{rx:3px}.bitmap .bm-row{fill:#fafbfc;stroke:#e1e4e8;rx:0}"
+      ".bitmap .bm-p text{fill:#5f6368;font-style:italic}";
   css += fmt::format(".bitmap .bm-p rect{{fill:url(#hatch-{});stroke:#a0a4ab}}", id);
-  for (int i = 0; i < 8; ++i) css += fmt::format(".bitmap .bm-c{} rect{{fill:{};stroke:{}}}", i, palette[i], palette_edge[i]);
+  for (int i = 0; i < 8; ++i)
+    css += fmt::format(".bitmap .bm-c{} rect{{fill:{};stroke:{}}}", i, palette[i], palette_edge[i]);
   return css + "</style>";
 }
 
@@ -139,7 +141,8 @@ std::string render_svg(const bit_map& m) {
                      R"(<line x1="0" y1="0" x2="0" y2="6" stroke="#c9ccd1" stroke-width="2"/></pattern></defs>)",
                      m.id);
   for (int bit = 7; bit >= 0; --bit)
-    out += fmt::format(R"(<text class="bm-h bm-m" x="{}" y="14">{}</text>)", gutter + (7 - bit) * cell_w + cell_w / 2, bit);
+    out += fmt::format(R"(<text class="bm-h bm-m" x="{}" y="14">{}</text>)", gutter + (7 - bit) * cell_w + cell_w / 2,
+                       bit);
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const auto& r = rows[i];
     const int y = top + static_cast<int>(i) * row_h;

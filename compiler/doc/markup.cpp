@@ -32,7 +32,14 @@ std::string md_escaped(std::string_view text) {
       case '\n': out += "<br>"; break;
       case '\r': break;
       case '|': out += "&#124;"; break;
-      case '\\': case '*': case '_': case '`': case '[': case ']': case '#': case '~':
+      case '\\':
+      case '*':
+      case '_':
+      case '`':
+      case '[':
+      case ']':
+      case '#':
+      case '~':
         out += '\\';
         out += ch;
         break;
@@ -48,8 +55,8 @@ std::string url_escaped(std::string_view name) {
   out.reserve(name.size());
   for (const char ch : name) {
     const auto c = static_cast<unsigned char>(ch);
-    const bool unreserved = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
-                            c == '-' || c == '.' || c == '_' || c == '~';
+    const bool unreserved = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' ||
+                            c == '.' || c == '_' || c == '~';
     if (unreserved) {
       out += ch;
     } else {

@@ -24,8 +24,7 @@ struct markdown_page {
   std::vector<std::pair<std::string, std::string>> svgs;  // file name, content
 };
 // `svg_stem` prefixes the SVG file names (`device` -> `device.assem100.svg`).
-[[nodiscard]] markdown_page render_markdown(const sheet& s, const std::string& svg_stem,
-                                            const page_options& opt = {});
+[[nodiscard]] markdown_page render_markdown(const sheet& s, const std::string& svg_stem, const page_options& opt = {});
 
 // One library entry: the file's summary and where its page is.
 struct library_entry {

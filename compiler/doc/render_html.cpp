@@ -61,8 +61,10 @@ void table_html(std::string& out, const table& t, const char* cls = "grid") {
       const auto& c = row[i];
       const char* cc = style_class(c.style);
       out += *cc != 0 ? fmt::format(R"(<td class="{}">)", cc) : std::string("<td>");
-      if (i == 0 && line != 0) line_link(out, line, c.text);
-      else text_html(out, c.text);
+      if (i == 0 && line != 0)
+        line_link(out, line, c.text);
+      else
+        text_html(out, c.text);
       out += "</td>";
     }
     out += "</tr>\n";
@@ -115,8 +117,10 @@ void legend_html(std::string& out, const bit_map& m) {
                        b.bits == 1 ? fmt::format("{}.{}", b.first / 8, b.first % 8)
                                    : fmt::format("{}.{} – {}.{}", b.first / 8, b.first % 8, (b.first + b.bits - 1) / 8,
                                                  (b.first + b.bits - 1) % 8));
-    if (b.line != 0) line_link(out, b.line, b.label);
-    else append_escaped(out, b.label);
+    if (b.line != 0)
+      line_link(out, b.line, b.label);
+    else
+      append_escaped(out, b.label);
     out += R"(</td><td class="muted">)";
     append_escaped(out, b.detail);
     out += fmt::format(" · {} bit{}</td></tr>", b.bits, b.bits == 1 ? "" : "s");
@@ -129,8 +133,10 @@ void maps_html(std::string& out, const sheet& s) {
   out += R"(<p class="hint">Byte offsets down, bits across (bit 7 left). Legend entries read <em>byte.bit</em>.</p>)";
   for (const auto& m : s.maps) {
     out += fmt::format(R"(<figure class="map" id="map-{}"><figcaption><h3>)", m.id);
-    if (m.line != 0) line_link(out, m.line, m.title);
-    else append_escaped(out, m.title);
+    if (m.line != 0)
+      line_link(out, m.line, m.title);
+    else
+      append_escaped(out, m.title);
     out += "</h3><p>";
     append_escaped(out, m.caption);
     out += "</p>";
@@ -161,8 +167,10 @@ void findings_html(std::string& out, const sheet& s) {
   for (const auto& f : s.findings) {
     const auto level = to_string(f.level);
     out += fmt::format(R"(<li class="{0}"><span class="sev">{0}</span> )", level);
-    if (f.line != 0) line_link(out, f.line, fmt::format("line {}", f.line));
-    else out += R"(<span class="muted">whole file</span>)";
+    if (f.line != 0)
+      line_link(out, f.line, fmt::format("line {}", f.line));
+    else
+      out += R"(<span class="muted">whole file</span>)";
     out += " <span class=\"msg\">";
     append_escaped(out, f.message);
     out += "</span> <code class=\"id\">";
@@ -183,7 +191,8 @@ void findings_html(std::string& out, const sheet& s) {
 void source_html(std::string& out, const sheet& s, const source_file& src) {
   std::vector<std::uint8_t> marks(src.line_count() + 2, 0);  // 1 note, 2 warning, 3 error
   for (const auto& f : s.findings)
-    if (f.line < marks.size()) marks[f.line] = std::max<std::uint8_t>(marks[f.line], static_cast<std::uint8_t>(f.level) + 1);
+    if (f.line < marks.size())
+      marks[f.line] = std::max<std::uint8_t>(marks[f.line], static_cast<std::uint8_t>(f.level) + 1);
   out += fmt::format(R"(<section id="source"><details id="source-text"><summary><h2>Source</h2> <span class="muted">)"
                      R"({} lines: open to read; line links land here</span></summary><pre class="src">)",
                      src.line_count());
@@ -209,8 +218,9 @@ constexpr std::string_view open_source_script =
 std::string render_html(const sheet& s, const source_file& src, const page_options& opt) {
   std::string out;
   out.reserve(src.size() * 2 + 65536);
-  out += "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
-         "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
+  out +=
+      "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
+      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
   out += fmt::format("<meta name=\"generator\" content=\"edsc {}\">\n<title>", EDSC_VERSION_STRING);
   append_escaped(out, s.title);
   out += " · EDS datasheet</title>\n<style>";

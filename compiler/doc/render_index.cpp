@@ -43,15 +43,16 @@ std::vector<std::pair<std::string, std::vector<std::size_t>>> by_vendor(const st
     } else {
       g = groups.size();
       groups.push_back({vendor_group(e), {}});
-      if (numbered) by_id[e.sum.vendor_id] = g;
-      else by_name[vendor_group(e)] = g;
+      if (numbered)
+        by_id[e.sum.vendor_id] = g;
+      else
+        by_name[vendor_group(e)] = g;
     }
     groups[g].second.push_back(i);
   }
   std::stable_sort(groups.begin(), groups.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   return groups;
 }
-
 
 // Most module files (a rack's I/O cards) name no network: an empty cell would
 // read as a fault of the index, so it says so. A file that could not be read
@@ -97,8 +98,9 @@ std::string html_index(const std::vector<library_entry>& entries,
     warnings += e.sum.warnings;
     broken += e.unreadable || e.sum.errors > 0 ? 1 : 0;
   }
-  std::string out = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
-                    "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
+  std::string out =
+      "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
+      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
   out += fmt::format("<meta name=\"generator\" content=\"edsc {}\">\n<title>EDS library</title>\n<style>",
                      EDSC_VERSION_STRING);
   out += page_css();
@@ -136,8 +138,8 @@ std::string html_index(const std::vector<library_entry>& entries,
   }
   out += R"(<section><p class="hint">Grouped by vendor. Click a column heading to sort within each vendor.</p>)"
          R"(<div class="scroll"><table class="grid lib" id="library"><thead><tr>)";
-  static constexpr const char* heads[] = {"Vendor", "Product", "Type", "Code", "Revision", "Networks",
-                                          "File", "Errors", "Warnings"};
+  static constexpr const char* heads[] = {"Vendor",   "Product", "Type",   "Code",    "Revision",
+                                          "Networks", "File",    "Errors", "Warnings"};
   for (int i = 0; i < 9; ++i) out += fmt::format(R"(<th data-col="{}">{}</th>)", i, heads[i]);
   out += "</tr></thead>\n";
   for (const auto& [vendor, rows] : by_vendor(entries)) {
@@ -161,14 +163,18 @@ std::string html_index(const std::vector<library_entry>& entries,
       if (e.unreadable) append_escaped(out, e.problem);
       if (collides[i] >= 0) out += R"(<span class="badge">identity collision</span>)";
       out += "</td>";
-      cell(out, s.type.empty() ? (s.identified ? std::to_string(s.type_id) : "") : fmt::format("{} ({})", s.type, s.type_id),
+      cell(out,
+           s.type.empty() ? (s.identified ? std::to_string(s.type_id) : "") : fmt::format("{} ({})", s.type, s.type_id),
            "", std::to_string(s.type_id));
       cell(out, s.identified ? std::to_string(s.product_code) : "", "num", std::to_string(s.product_code));
       cell(out, s.revision, "num", std::to_string(s.major * 1000 + s.minor));
-      if (!e.unreadable && s.networks.empty()) cell(out, no_network, "muted", {}, no_network_title);
-      else cell(out, s.networks);
+      if (!e.unreadable && s.networks.empty())
+        cell(out, no_network, "muted", {}, no_network_title);
+      else
+        cell(out, s.networks);
       cell(out, e.source, "code");
-      cell(out, s.errors > 0 ? std::to_string(s.errors) : "", s.errors > 0 ? "num err" : "num", std::to_string(s.errors));
+      cell(out, s.errors > 0 ? std::to_string(s.errors) : "", s.errors > 0 ? "num err" : "num",
+           std::to_string(s.errors));
       cell(out, s.warnings > 0 ? std::to_string(s.warnings) : "", s.warnings > 0 ? "num warn" : "num",
            std::to_string(s.warnings));
       out += "</tr>\n";
@@ -197,8 +203,9 @@ std::string md_index(const std::vector<library_entry>& entries,
   }
   for (const auto& [vendor, rows] : by_vendor(entries)) {
     out += fmt::format("## {}\n\n", md_escaped(vendor));
-    out += "| Product | Type | Code | Revision | Networks | File | Errors | Warnings |\n"
-           "|---|---|---|---|---|---|---|---|\n";
+    out +=
+        "| Product | Type | Code | Revision | Networks | File | Errors | Warnings |\n"
+        "|---|---|---|---|---|---|---|---|\n";
     for (const auto i : rows) {
       const auto& e = entries[i];
       const auto& s = e.sum;

@@ -86,8 +86,8 @@ markdown_page render_markdown(const sheet& s, const std::string& svg_stem, const
   if (s.findings.empty()) out += "edsc finds nothing to report in this file.\n";
   for (const auto& f : s.findings) {
     out += fmt::format("- **{}** {}: {} `{}`\n", to_string(f.level),
-                       f.line != 0 ? fmt::format("line {}", f.line) : std::string("whole file"),
-                       md_escaped(f.message), f.id);  // ids are the catalogue's own words
+                       f.line != 0 ? fmt::format("line {}", f.line) : std::string("whole file"), md_escaped(f.message),
+                       f.id);  // ids are the catalogue's own words
     for (const auto& [line, text] : f.notes) out += fmt::format("  - note (line {}): {}\n", line, md_escaped(text));
   }
   return page;

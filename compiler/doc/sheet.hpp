@@ -51,7 +51,7 @@ struct bit_map {
 struct finding {
   severity level = severity::note;
   std::string id, message;
-  std::uint32_t line = 0, column = 0;  // 0: the whole file
+  std::uint32_t line = 0, column = 0;                        // 0: the whole file
   std::vector<std::pair<std::uint32_t, std::string>> notes;  // line, text
 };
 
@@ -68,11 +68,11 @@ struct summary {
 struct sheet {
   std::string title, subtitle;  // product name; vendor and product type
   summary sum;
-  table identity;      // field, value
-  table file_info;     // [File]
-  table devicenet_io;  // one row per predefined connection type
-  table io_data;       // InputN/OutputN
-  table connections;   // EtherNet/IP ConnectionN
+  table identity;           // field, value
+  table file_info;          // [File]
+  table devicenet_io;       // one row per predefined connection type
+  table io_data;            // InputN/OutputN
+  table connections;        // EtherNet/IP ConnectionN
   table proxy_connections;  // ProxyConnectN / ProxiedConnectN, apart from the real ones
   std::vector<bit_map> maps;
   table params, groups, ports, capacity;

@@ -49,9 +49,7 @@ std::string reader::ref_text(const model::reference& r, bool with_name) const {
     case ref_kind::param:
     case ref_kind::proxy_param:
     case ref_kind::proxied_param:
-    case ref_kind::constructed_param:
-      name = param_name(dev, r.target);
-      break;
+    case ref_kind::constructed_param: name = param_name(dev, r.target); break;
     case ref_kind::assem:
     case ref_kind::assem_exa:
     case ref_kind::proxy_assem:
@@ -61,8 +59,7 @@ std::string reader::ref_text(const model::reference& r, bool with_name) const {
       if (r.target < dev.assemblies.size() && dev.assemblies[r.target].name.ok())
         name = trimmed(dev.assemblies[r.target].name.text);
       break;
-    default:
-      break;
+    default: break;
   }
   return name.empty() ? out : fmt::format("{} ({})", name, out);
 }
@@ -83,7 +80,8 @@ std::string segment_text(const reader& r, const model::epath_segment& s) {
     case model::segment_kind::attribute: return fmt::format("attribute {}", number);
     case model::segment_kind::symbol: return fmt::format("symbol \"{}\"", utf8(s.symbol));
     case model::segment_kind::param: return r.ref_text(s.param);
-    case model::segment_kind::placeholder: return fmt::format("{} (filled in by the configuration tool)", utf8(s.placeholder));
+    case model::segment_kind::placeholder:
+      return fmt::format("{} (filled in by the configuration tool)", utf8(s.placeholder));
     case model::segment_kind::unknown: return "undecoded bytes";
   }
   return {};
@@ -110,9 +108,11 @@ using detail::utf8;
 using model::value;
 
 std::string networks_text(std::uint8_t nets) {
-  static constexpr std::pair<std::uint8_t, const char*> names[] = {
-      {model::net_devicenet, "DeviceNet"}, {model::net_ethernetip, "EtherNet/IP"},
-      {model::net_controlnet, "ControlNet"}, {model::net_componet, "CompoNet"}, {model::net_modbus, "Modbus"}};
+  static constexpr std::pair<std::uint8_t, const char*> names[] = {{model::net_devicenet, "DeviceNet"},
+                                                                   {model::net_ethernetip, "EtherNet/IP"},
+                                                                   {model::net_controlnet, "ControlNet"},
+                                                                   {model::net_componet, "CompoNet"},
+                                                                   {model::net_modbus, "Modbus"}};
   std::string out;
   for (const auto& [bit, name] : names)
     if ((nets & bit) != 0) join(out, ", ", std::string(name));
@@ -172,14 +172,14 @@ void build_identity(const reader& r, sheet& s) {
   row("Product name", r.at(id.prod_name));
   row("Catalog", r.at(id.catalog));
   // The same words as the library index's tooltip for such a file.
-  auto nets = s.sum.networks.empty()
-                  ? std::string("none named, neither in [Device Classification] nor by its sections")
-                  : s.sum.networks;
+  auto nets = s.sum.networks.empty() ? std::string("none named, neither in [Device Classification] nor by its sections")
+                                     : s.sum.networks;
   if (!r.dev.classes.from_classification && !s.sum.networks.empty()) nets += " (from the sections present)";
   if (r.dev.classes.safety) nets += ", CIP Safety";
   row("Networks", {nets, r.section_line(r.dev.classes.section)});
   row("Icon", r.at(id.icon));
-  if (!id.icon_data.empty()) row("Icon data", {fmt::format("{} bytes (IconContents)", id.icon_data.size()), r.line(id.icon_contents.from)});
+  if (!id.icon_data.empty())
+    row("Icon data", {fmt::format("{} bytes (IconContents)", id.icon_data.size()), r.line(id.icon_contents.from)});
   const auto expected = conventional_name(s.sum);
   std::string file = s.sum.file;
   if (!expected.empty()) {
@@ -211,9 +211,8 @@ void build_groups(const reader& r, sheet& s) {
       const auto* ref = m.as_ref();
       join(members, "\n", (ref != nullptr ? r.ref_text(*ref) : r.text(m)));
     }
-    s.groups.rows.push_back({{fmt::format("Group{}", g.number), r.line(g.from), cell_style::code},
-                             r.at(g.name),
-                             {members}});
+    s.groups.rows.push_back(
+        {{fmt::format("Group{}", g.number), r.line(g.from), cell_style::code}, r.at(g.name), {members}});
   }
 }
 
@@ -237,9 +236,9 @@ void build_capacity(const reader& r, sheet& s) {
   }
   for (const auto& t : r.dev.cap.tspecs) {
     const auto dir = r.text(t.direction);
-    s.capacity.rows.push_back({{fmt::format("TSpec{}", t.number), r.line(t.from), cell_style::code},
-                               {fmt::format("{}: {} bytes at up to {} packets/s", dir.empty() ? "?" : dir,
-                                            r.text(t.size), r.text(t.rate))}});
+    s.capacity.rows.push_back(
+        {{fmt::format("TSpec{}", t.number), r.line(t.from), cell_style::code},
+         {fmt::format("{}: {} bytes at up to {} packets/s", dir.empty() ? "?" : dir, r.text(t.size), r.text(t.rate))}});
   }
 }
 

@@ -70,15 +70,15 @@ void io_data_rows(const reader& r, const model::io_info& io, const char* prefix,
       const auto sig = d.significant_bits.is_integer() && d.significant_bits.as_uint() == 0
                            ? std::string("all")
                            : r.text(d.significant_bits);
-      t.rows.push_back({{fmt::format("{}{}{}", prefix, d.output ? "Output" : "Input", d.number), r.line(d.from),
-                         cell_style::code},
-                        r.at(d.name),
-                        {d.size.is_integer() ? bytes_text(d.size.as_uint()) : r.text(d.size), r.line(d.size.from),
-                         cell_style::number},
-                        {sig, r.line(d.significant_bits.from), cell_style::number},
-                        {d.mask.is_integer() ? io_mask_text(d.mask.as_uint()) : r.text(d.mask), r.line(d.mask.from)},
-                        {r.path_text(d.path), r.line(d.path.from)},
-                        r.at(d.help)});
+      t.rows.push_back(
+          {{fmt::format("{}{}{}", prefix, d.output ? "Output" : "Input", d.number), r.line(d.from), cell_style::code},
+           r.at(d.name),
+           {d.size.is_integer() ? bytes_text(d.size.as_uint()) : r.text(d.size), r.line(d.size.from),
+            cell_style::number},
+           {sig, r.line(d.significant_bits.from), cell_style::number},
+           {d.mask.is_integer() ? io_mask_text(d.mask.as_uint()) : r.text(d.mask), r.line(d.mask.from)},
+           {r.path_text(d.path), r.line(d.path.from)},
+           r.at(d.help)});
     }
   }
 }
@@ -116,8 +116,9 @@ std::string direction_text(const model::direction_params& d) {
   add(d.prio_scheduled, "scheduled");
   add(d.prio_high, "high priority");
   add(d.prio_low, "low priority");
-  static constexpr const char* formats[] = {"modeless", "zero-length", "format 2", "heartbeat",
-                                            "32-bit run/idle header", "CIP Safety", "format 6", "format 7"};
+  static constexpr const char* formats[] = {
+      "modeless",   "zero-length", "format 2", "heartbeat", "32-bit run/idle header",
+      "CIP Safety", "format 6",    "format 7"};
   add(true, formats[d.real_time_format & 7]);
   return out;
 }
@@ -139,8 +140,8 @@ std::string sized(std::uint32_t size, std::uint32_t instance) {
 
 // The columns of a ConnectionN-layout table; `first` names the entry column.
 std::vector<std::string> connection_head(const char* first) {
-  return {first, "Name", "Trigger and transport", "O→T (to the device)", "T→O (from the device)", "Configuration",
-          "Path"};
+  return {first,           "Name", "Trigger and transport", "O→T (to the device)", "T→O (from the device)",
+          "Configuration", "Path"};
 }
 
 // One row of a ConnectionN-layout entry: `entry` is its keyword and number,
@@ -167,8 +168,9 @@ void eip_rows(const reader& r, const std::vector<emit::eip_connection_facts>& fa
     if (f == nullptr) continue;  // a repeated number: the header's first one wins, and so does the page
     std::string config = f->config_size != 0 || f->config_instance != 0 ? bytes_text(f->config_size) : "";
     if (f->config_instance != 0) config += fmt::format(", assembly {}", f->config_instance);
-    t.rows.push_back(connection_row(r, c, fmt::format("Connection{}", c.number), sized(f->output_size, f->output_instance),
-                                    sized(f->input_size, f->input_instance), std::move(config)));
+    t.rows.push_back(connection_row(r, c, fmt::format("Connection{}", c.number),
+                                    sized(f->output_size, f->output_instance), sized(f->input_size, f->input_instance),
+                                    std::move(config)));
   }
 }
 

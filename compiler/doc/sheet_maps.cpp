@@ -95,8 +95,8 @@ std::uint64_t member_bits(const reader& r, const model::assembly& a) {
 constexpr std::uint64_t max_map_bytes = 1u << 16;
 
 void assembly_map(const reader& r, const model::assembly& a, sheet& s) {
-  static constexpr const char* stems[] = {"Assem", "AssemExa", "ProxyAssem", "ProxiedAssem", "ProxyAssemExa",
-                                          "ProxiedAssemExa"};
+  static constexpr const char* stems[] = {"Assem",        "AssemExa",      "ProxyAssem",
+                                          "ProxiedAssem", "ProxyAssemExa", "ProxiedAssemExa"};
   const auto keyword = fmt::format("{}{}", stems[static_cast<int>(a.kind)], a.number);
   bit_map m;
   m.id = fmt::format("{}{}", stems[static_cast<int>(a.kind)], a.number);
@@ -193,7 +193,8 @@ void io_map(const reader& r, const model::io_data& d, const char* prefix, sheet&
   if (d.path.present()) m.caption += ", path: " + r.path_text(d.path);
   map_builder b(m);
   const auto label = name.empty() ? keyword : name;
-  if (const auto* a = assembly_at(r.dev, instance_of(r.dev, d.path)); a != nullptr && member_bits(r, *a) <= m.bytes * 8u) {
+  if (const auto* a = assembly_at(r.dev, instance_of(r.dev, d.path));
+      a != nullptr && member_bits(r, *a) <= m.bytes * 8u) {
     m.caption += fmt::format(", members from Assem{}", a->number);
     fill_from_members(r, *a, b);
   } else if (auto fields = help_layout(d.help.ok() ? r.text(d.help) : std::string{}, m.bytes * 8); !fields.empty()) {

@@ -44,7 +44,8 @@ std::optional<scaling> scaling_of(const model::param& p) {
   take(p.scaling_divisor, s.divisor);
   take(p.scaling_base, s.base);
   take(p.scaling_offset, s.offset);
-  if (p.decimal_precision.is_integer()) s.precision = static_cast<int>(std::min<std::uint64_t>(p.decimal_precision.as_uint(), 9));
+  if (p.decimal_precision.is_integer())
+    s.precision = static_cast<int>(std::min<std::uint64_t>(p.decimal_precision.as_uint(), 9));
   if (s.divisor == 0) return std::nullopt;  // a check reports it; no number to show
   if (s.multiplier == 1 && s.divisor == 1 && s.base == 1 && s.offset == 0 && s.precision == 0) return std::nullopt;
   return s;
@@ -78,8 +79,7 @@ std::string flags_text(const model::param& p) {
 std::string enumeration_text(const reader& r, const model::param& p) {
   std::string out;
   if (p.enum_index != model::none && p.enum_index < r.dev.enums.size()) {
-    for (const auto& e : r.dev.enums[p.enum_index].pairs)
-      join(out, "\n", r.text(e.val) + " = " + r.text(e.text));
+    for (const auto& e : r.dev.enums[p.enum_index].pairs) join(out, "\n", r.text(e.val) + " = " + r.text(e.text));
   } else if (p.enum_par_index != model::none && p.enum_par_index < r.dev.enum_pars.size()) {
     // Which value the first string names is unconfirmed: list them in order.
     for (const auto& e : r.dev.enum_pars[p.enum_par_index].strings) {

@@ -88,9 +88,14 @@ nlohmann::ordered_json json_of(const cli_command& c) {
   nlohmann::ordered_json j{{"path", c.path}, {"summary", c.summary}};
   j["options"] = nlohmann::ordered_json::array();
   for (const auto& o : c.options) {
-    nlohmann::ordered_json jo{{"name", o.name},           {"shorts", o.shorts},     {"longs", o.longs},
-                              {"positional", o.positional}, {"takes_value", o.takes_value},
-                              {"required", o.required},   {"repeats", o.repeats}, {"kind", to_string(o.kind)},
+    nlohmann::ordered_json jo{{"name", o.name},
+                              {"shorts", o.shorts},
+                              {"longs", o.longs},
+                              {"positional", o.positional},
+                              {"takes_value", o.takes_value},
+                              {"required", o.required},
+                              {"repeats", o.repeats},
+                              {"kind", to_string(o.kind)},
                               {"value_name", o.value_name}};
     if (o.kind == arg_kind::word) jo["choices"] = o.choices;
     if (o.kind == arg_kind::number) jo["range"] = {{"min", o.min}, {"max", o.max}, {"integer", o.integer}};

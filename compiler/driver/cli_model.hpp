@@ -40,7 +40,7 @@ struct cli_option {
   std::vector<std::string> shorts, longs;  // "-o", "--output"
   std::string name;                        // positionals: "input"
   bool positional = false, takes_value = false, required = false, repeats = false;
-  std::string value_name;                  // "N", "TEXT", "auto|always|never"
+  std::string value_name;  // "N", "TEXT", "auto|always|never"
   std::vector<std::string> choices;
   std::string help;
   arg_kind kind = arg_kind::none;
@@ -76,8 +76,7 @@ void add_example(CLI::App* cmd, std::string command, std::string what);
 namespace detail {
 // Registers `opt` as a number from `min` to `max` and checks every value it
 // is given; `store` receives the value once it is accepted.
-CLI::Option* bounded(CLI::Option* opt, double min, double max, bool integer,
-                     std::function<void(double)> store);
+CLI::Option* bounded(CLI::Option* opt, double min, double max, bool integer, std::function<void(double)> store);
 }  // namespace detail
 
 // An option taking a whole number (decimal, or hexadecimal with 0x) from

@@ -9,8 +9,8 @@
 
 #include <fmt/format.h>
 
-#include "check/check_file.hpp"
 #include "base/plural.hpp"
+#include "check/check_file.hpp"
 #include "diag/render_text.hpp"
 #include "driver/choice.hpp"
 #include "driver/commands.hpp"
@@ -21,7 +21,6 @@
 namespace edsc::driver {
 
 namespace {
-
 
 struct check_cli {
   std::vector<std::string> inputs;
@@ -183,7 +182,8 @@ void register_check(CLI::App& app, command_action& run) {
       ->required();
   add_stdin_filename(cmd, cli->stdin_name);
   add_report_options(cmd, cli->color, cli->format, cli->warning_flags);
-  add_number(cmd, "--max-errors", cli->max_errors, std::size_t{0}, std::size_t{1000000}, "Show at most N errors (0: all)");
+  add_number(cmd, "--max-errors", cli->max_errors, std::size_t{0}, std::size_t{1000000},
+             "Show at most N errors (0: all)");
   add_choice(cmd, "--network", cli->networks,
              {{"devicenet", std::uint8_t{model::net_devicenet}},
               {"ethernetip", std::uint8_t{model::net_ethernetip}},

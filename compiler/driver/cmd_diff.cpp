@@ -33,7 +33,8 @@ std::unique_ptr<analysis> load(const std::string& path, color_mode color) {
     std::string report;
     for (const auto& d : a->syntax) render_text(*a->source, d, text_style{use_color(color, stderr)}, report);
     write_all(stderr, report);
-    print_error(fmt::format("{}: cannot compare: syntax errors leave its model incomplete{}", path, fix_hint(a->syntax)));
+    print_error(
+        fmt::format("{}: cannot compare: syntax errors leave its model incomplete{}", path, fix_hint(a->syntax)));
     return nullptr;
   }
   if (a->dev.incomplete) {

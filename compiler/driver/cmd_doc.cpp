@@ -93,8 +93,10 @@ int run_doc(const doc_cli& cli) {
     // Pages beside the EDS files would mix the site into the library (and
     // its index.html over a file of the same name).
     if (io::same_file(cli.input, cli.output)) {
-      print_error(fmt::format("{}: the site cannot go into the folder it documents; name another folder "
-                              "(a new one inside it is fine)", cli.output));
+      print_error(
+          fmt::format("{}: the site cannot go into the folder it documents; name another folder "
+                      "(a new one inside it is fine)",
+                      cli.output));
       return exit_failure;
     }
     if (fs::exists(cli.output, ec) && !fs::is_directory(cli.output, ec)) {
@@ -110,11 +112,13 @@ int run_doc(const doc_cli& cli) {
 
 void register_doc(CLI::App& app, command_action& run) {
   auto cli = std::make_shared<doc_cli>();
-  auto* cmd = app.add_subcommand("doc", "Write a readable datasheet of an EDS file, or a site for a folder (docs/doc.md)");
+  auto* cmd =
+      app.add_subcommand("doc", "Write a readable datasheet of an EDS file, or a site for a folder (docs/doc.md)");
   takes(cmd->add_option("input", cli->input, "The EDS file, or a folder searched recursively for *.eds"), arg_kind::eds)
       ->required();
-  takes(cmd->add_option("-o,--output", cli->output, "The page to write ('-' for standard output), or the site's folder"),
-        arg_kind::output)
+  takes(
+      cmd->add_option("-o,--output", cli->output, "The page to write ('-' for standard output), or the site's folder"),
+      arg_kind::output)
       ->required();
   add_choice(cmd, "--format", cli->format, {{"html", doc::page_format::html}, {"md", doc::page_format::markdown}},
              "html (the default) or md (Markdown, bit maps as SVG files beside it)");

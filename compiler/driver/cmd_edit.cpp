@@ -46,8 +46,10 @@ diagnostics introduced(const diagnostics& before, const diagnostics& after) {
   diagnostics out;
   for (const auto& d : after) {
     const auto it = seen.find({d.id, d.message});
-    if (it != seen.end()) seen.erase(it);
-    else out.push_back(d);
+    if (it != seen.end())
+      seen.erase(it);
+    else
+      out.push_back(d);
   }
   return out;
 }
@@ -112,12 +114,14 @@ void register_edit(CLI::App& app, command_action& run) {
       {"--remove-entry", {op_kind::remove_entry, "Section.Keyword: remove an entry"}},
       {"--add-section", {op_kind::add_section, "Name: add an empty section"}},
       {"--remove-section", {op_kind::remove_section, "Name: remove a section and its entries"}},
-      {"--resize", {op_kind::resize,
-                    "InputN=bytes[:bits] or OutputN=...: resize DeviceNet I/O, keeping the old data set in "
-                    "[Variant_IO_Info]"}},
+      {"--resize",
+       {op_kind::resize,
+        "InputN=bytes[:bits] or OutputN=...: resize DeviceNet I/O, keeping the old data set in "
+        "[Variant_IO_Info]"}},
   };
   for (const auto& [name, what] : ops) {
-    auto* o = takes(cmd->add_option(name, opt->values[what.first], what.second), arg_kind::text)->allow_extra_args(false);
+    auto* o =
+        takes(cmd->add_option(name, opt->values[what.first], what.second), arg_kind::text)->allow_extra_args(false);
     opt->kinds[o] = what.first;
   }
   add_example(cmd, "edsc edit device.eds --set Device.MajRev=2 --in-place", "change one field, nothing else");

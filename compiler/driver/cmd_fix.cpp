@@ -2,8 +2,8 @@
 
 #include <fmt/format.h>
 
-#include "check/check_file.hpp"
 #include "base/plural.hpp"
+#include "check/check_file.hpp"
 #include "diag/render_text.hpp"
 #include "driver/commands.hpp"
 #include "driver/destination.hpp"
@@ -43,8 +43,7 @@ int run_fix(const fix_options& opt) {
   const text_style style{use_color(color_mode::auto_detect, stderr)};
   if (!opt.quiet) {
     // Located in the repaired text, so named after where that text goes.
-    for (const auto& d : result.remaining)
-      render_text(*result.final_source, opt.dest.target_name(), d, style, report);
+    for (const auto& d : result.remaining) render_text(*result.final_source, opt.dest.target_name(), d, style, report);
   }
   report += fmt::format("{}: {} applied, {} left without a fix-it ({})\n", src.path(),
                         plural(result.applied.size(), "fix", "fixes"), plural(result.remaining.size(), "finding"),
@@ -61,7 +60,8 @@ void register_fix(CLI::App& app, command_action& run) {
   auto opt = std::make_shared<fix_options>();
   auto* cmd = app.add_subcommand("fix", "Apply every certain fix-it of the checker; report what is left");
   opt->dest.add_options(*cmd, "The EDS file to repair");
-  takes(cmd->add_option("-W", opt->warning_flags, "Diagnostic policy, as for check (e.g. -Wpedantic)"), arg_kind::warning)
+  takes(cmd->add_option("-W", opt->warning_flags, "Diagnostic policy, as for check (e.g. -Wpedantic)"),
+        arg_kind::warning)
       ->allow_extra_args(false);
   cmd->add_flag("-q,--quiet", opt->quiet, "List the repairs only, not the findings left");
   add_example(cmd, "edsc fix --in-place device.eds", "apply the certain repairs");

@@ -32,7 +32,8 @@ int run_fmt(const fmt_options& opt) {
   const auto a = edit::analyze(src.path(), input);
   if (a->has_syntax_errors()) {
     std::string report;
-    for (const auto& d : a->syntax) render_text(*a->source, d, text_style{use_color(color_mode::auto_detect, stderr)}, report);
+    for (const auto& d : a->syntax)
+      render_text(*a->source, d, text_style{use_color(color_mode::auto_detect, stderr)}, report);
     write_all(stderr, report);
     print_error(fmt::format("{}: not formatted: fix the syntax errors first{}", src.path(), fix_hint(a->syntax)));
     return exit_findings;
@@ -48,8 +49,8 @@ int run_fmt(const fmt_options& opt) {
   // Layout only: a formatted file that means something else is a bug, and
   // is never written.
   if (*out != input && !edit::means_the_same(*a, src.path(), *out)) {
-    print_error(fmt::format("{}: internal error: formatting would change the file's meaning; nothing written",
-                            src.path()));
+    print_error(
+        fmt::format("{}: internal error: formatting would change the file's meaning; nothing written", src.path()));
     return exit_failure;
   }
   if (opt.check) {

@@ -4,15 +4,15 @@
 
 #include <fmt/format.h>
 
+#include "diag/render_text.hpp"
 #include "driver/choice.hpp"
 #include "driver/commands.hpp"
-#include "driver/output.hpp"
-#include "diag/render_text.hpp"
 #include "driver/emitter_input.hpp"
+#include "driver/output.hpp"
 #include "emit/header.hpp"
 #include "emit/opener_plan.hpp"
-#include "io/read_file.hpp"
 #include "io/output_target.hpp"
+#include "io/read_file.hpp"
 
 namespace edsc::driver {
 
@@ -36,8 +36,8 @@ int run_stack_opener(const header_cli& cli) {
   if (!a) return exit_findings;
   const auto& src = *a->source;
   if (show_errors_touching(*a, emit::emitter::opener_stack)) {
-    print_error(fmt::format("{} has errors in what the OpENer project is built from: nothing written to {}",
-                            src.path(), cli.output));
+    print_error(fmt::format("{} has errors in what the OpENer project is built from: nothing written to {}", src.path(),
+                            cli.output));
     return exit_findings;
   }
   // `edsc check` reports the file's own findings; these are OpENer's.
@@ -71,7 +71,7 @@ int run_stack_opener(const header_cli& cli) {
     // A file that already holds these bytes keeps its time: the build that
     // regenerates on every configure then rebuilds only what changed.
     if (const auto old = io::read_source(path); std::holds_alternative<std::unique_ptr<source_file>>(old) &&
-                                                 std::get<std::unique_ptr<source_file>>(old)->text() == f.text)
+                                                std::get<std::unique_ptr<source_file>>(old)->text() == f.text)
       continue;
     if (write_result(path, f.text) != exit_ok) return exit_failure;
   }
@@ -119,14 +119,17 @@ void register_header(CLI::App& app, command_action& run) {
   auto* cmd = app.add_subcommand("header", "Generate the C header firmware needs from one EDS file (docs/header.md)");
   takes(cmd->add_option("input", cli->input, "The EDS file ('-': standard input)"), arg_kind::eds)->required();
   add_stdin_filename(cmd, cli->stdin_name);
-  takes(cmd->add_option("-o,--output", cli->output, "The header to write ('-' for standard output); with --stack, a folder"),
+  takes(cmd->add_option("-o,--output", cli->output,
+                        "The header to write ('-' for standard output); with --stack, a folder"),
         arg_kind::output)
       ->required();
-  takes(cmd->add_option("--prefix", cli->prefix, "Prefix of every macro (a C identifier, may be empty)"), arg_kind::text)
+  takes(cmd->add_option("--prefix", cli->prefix, "Prefix of every macro (a C identifier, may be empty)"),
+        arg_kind::text)
       ->default_str("EDS_");
   add_number(cmd, "--serial", cli->serial, std::uint32_t{0}, std::uint32_t{0xFFFFFFFF},
              "Serial number (decimal or 0x...); else the build defines it");
-  add_choice(cmd, "--stack", cli->stack, {"opener"}, "Generate a ready project for this stack instead; -o names its folder");
+  add_choice(cmd, "--stack", cli->stack, {"opener"},
+             "Generate a ready project for this stack instead; -o names its folder");
   takes(cmd->add_option("--template-dir", cli->template_dir, "Folder whose *.mustache files replace the built-in ones"),
         arg_kind::dir);
   add_example(cmd, "edsc header device.eds -o device_eds.h", "the header firmware compiles against");

@@ -99,7 +99,8 @@ int run_lsp(const lsp_cli& cli) {
 void register_lsp(CLI::App& app, command_action& run) {
   auto cli = std::make_shared<lsp_cli>();
   auto* cmd = app.add_subcommand("lsp", "Run the language server (LSP over standard input and output)");
-  takes(cmd->add_option("-W", cli->warning_flags, "Diagnostic policy, as for check (e.g. -Wpedantic)"), arg_kind::warning)
+  takes(cmd->add_option("-W", cli->warning_flags, "Diagnostic policy, as for check (e.g. -Wpedantic)"),
+        arg_kind::warning)
       ->allow_extra_args(false);
   cmd->add_flag("--stdio", cli->stdio, "Talk over standard input and output (the default and only transport)");
   add_example(cmd, "edsc lsp", "started by an editor, not by hand");

@@ -88,7 +88,8 @@ int run_net_map(const net_cli& cli) {
 }  // namespace
 
 void register_net(CLI::App& app, command_action& run) {
-  auto* net = app.add_subcommand("net", "Check a DeviceNet network file and lay out its scanner's images (docs/network.md)");
+  auto* net =
+      app.add_subcommand("net", "Check a DeviceNet network file and lay out its scanner's images (docs/network.md)");
   net->require_subcommand(1);
 
   auto check_cli = std::make_shared<net_cli>();
@@ -102,8 +103,12 @@ void register_net(CLI::App& app, command_action& run) {
   auto* map = net->add_subcommand("map", "Lay out the scanner's input and output images as Automap does");
   takes(map->add_option("network", map_cli->input, "The network file (TOML)"), arg_kind::toml)->required();
   add_choice(map, "--format", map_cli->map,
-             {{"text", map_format::text}, {"json", map_format::json}, {"svg", map_format::svg},
-              {"csv", map_format::csv}, {"c", map_format::c}, {"modbus", map_format::modbus}},
+             {{"text", map_format::text},
+              {"json", map_format::json},
+              {"svg", map_format::svg},
+              {"csv", map_format::csv},
+              {"c", map_format::c},
+              {"modbus", map_format::modbus}},
              "text (the default), json, svg, csv (RSLogix 5000 alias tags), c (scanlist header), "
              "modbus (register map)");
   takes(map->add_option("-o,--output", map_cli->output, "Write the map here ('-': standard output, the default)"),

@@ -77,7 +77,8 @@ int run_new(new_options opt) {
     // Whatever was asked for, the result must check clean before it is written.
     const auto a = edit::analyze(opt.output.empty() ? "<new>" : opt.output, text);
     std::string report;
-    for (const auto& d : a->diags) render_text(*a->source, d, text_style{use_color(color_mode::auto_detect, stderr)}, report);
+    for (const auto& d : a->diags)
+      render_text(*a->source, d, text_style{use_color(color_mode::auto_detect, stderr)}, report);
     write_all(stderr, report);
     if (a->errors() > 0 && !opt.force) {
       print_error("the new file would have the errors above; nothing written (--force writes anyway)");
@@ -140,11 +141,13 @@ void register_new(CLI::App& app, command_action& run) {
   add("--date", &edit::device_spec::date, "Creation date mm-dd-yyyy (default: today), for reproducible builds");
   add("--time", &edit::device_spec::time, "Creation time hh:mm:ss (default: 00:00:00 with --date, else now)");
   add_choice(cmd, "--eol", opt->eol, {"lf", "crlf"}, "Line endings (default: lf)");
-  auto* output = takes(cmd->add_option("-o,--output", opt->output, "Write the file here ('-': standard output, the default)"),
-                       arg_kind::output);
+  auto* output =
+      takes(cmd->add_option("-o,--output", opt->output, "Write the file here ('-': standard output, the default)"),
+            arg_kind::output);
   auto* old_output = cmd->add_option("--output-file", opt->output)->group("");  // -o's old long form (hidden)
   cmd->add_flag("--force", opt->force, "Write even when the result has errors");
-  add_example(cmd, "edsc new --vendor 65535 --product-type 7 --product-code 2 --name 'Sensor' --input-bytes 3 -o sensor.eds",
+  add_example(cmd,
+              "edsc new --vendor 65535 --product-type 7 --product-code 2 --name 'Sensor' --input-bytes 3 -o sensor.eds",
               "start the EDS of a new DeviceNet node");
   struct spelling {
     CLI::Option *old_option, *option;

@@ -9,18 +9,18 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "base/plural.hpp"
 #include "check/check_file.hpp"
 #include "cip/status.hpp"
-#include "base/plural.hpp"
+#include "connections/plan.hpp"
 #include "driver/choice.hpp"
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
 #include "driver/verify_live.hpp"
 #include "io/collect_inputs.hpp"
 #include "io/output_target.hpp"
-#include "connections/plan.hpp"
-#include "live/probe.hpp"
 #include "live/client.hpp"
+#include "live/probe.hpp"
 #include "live/upload.hpp"
 
 namespace edsc::driver {
@@ -67,14 +67,15 @@ std::vector<library_match> match_library(const io::collected_inputs& inputs, con
   return out;
 }
 
-std::string render_probe_text(const probe_cli& cli, const live::probe_result& r, const std::vector<library_match>& lib) {
+std::string render_probe_text(const probe_cli& cli, const live::probe_result& r,
+                              const std::vector<library_match>& lib) {
   const auto& id = r.identity;
   std::string out = fmt::format("{} ({})\n", cli.host, r.identity_source);
   // edsc has no vendor table: the name is what a matching EDS file calls it.
   const auto named = std::find_if(lib.begin(), lib.end(), [](const auto& m) { return !m.vendor_name.empty(); });
-  out += named == lib.end() ? fmt::format("  vendor        {}\n", id.vendor)
-                            : fmt::format("  vendor        {} ({}, as {} names it)\n", id.vendor, named->vendor_name,
-                                          named->path);
+  out += named == lib.end()
+             ? fmt::format("  vendor        {}\n", id.vendor)
+             : fmt::format("  vendor        {} ({}, as {} names it)\n", id.vendor, named->vendor_name, named->path);
   out += fmt::format("  device type   {}\n", id.device_type);
   out += fmt::format("  product code  {}\n", id.product_code);
   out += fmt::format("  revision      {}.{}\n", id.major, id.minor);
@@ -110,12 +111,14 @@ std::variant<std::size_t, std::string> upload_eds(const probe_cli& cli, const ne
   if (!file) return "upload of the EDS from the device: " + file.error().message;
   const auto& bytes = *file;
   std::fflush(stdout);
-  if (auto e = io::write_output(cli.upload_eds, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size())))
+  if (auto e =
+          io::write_output(cli.upload_eds, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size())))
     return e->message;
   return bytes.size();
 }
 
-std::string render_probe_json(const probe_cli& cli, const live::probe_result& r, const std::vector<library_match>& lib) {
+std::string render_probe_json(const probe_cli& cli, const live::probe_result& r,
+                              const std::vector<library_match>& lib) {
   const auto& id = r.identity;
   nlohmann::ordered_json j;
   j["host"] = cli.host;
@@ -214,8 +217,9 @@ void register_probe(CLI::App& app, command_action& run) {
       "probe", "Ask a running EtherNet/IP device who it is and how large its assemblies are (docs/live.md)");
   takes(cmd->add_option("host", cli->host, "The device's address (only this address is contacted)"), arg_kind::host)
       ->required();
-  takes(cmd->add_option("--library", cli->library, "A folder of EDS files: list those that describe the device, with "
-                                                   "the keying verdict (exact, compatible, none)"),
+  takes(cmd->add_option("--library", cli->library,
+                        "A folder of EDS files: list those that describe the device, with "
+                        "the keying verdict (exact, compatible, none)"),
         arg_kind::dir)
       ->type_name("DIR");
   add_choice(cmd, "--format", cli->format, {"text", "json"}, "Output format: text (the default) or json");

@@ -31,7 +31,8 @@ std::string rows_of(std::string_view group) {
 
 int run_rules(const rules_cli& cli) {
   if (!cli.id.empty() && !find_rule(cli.id)) {
-    if (auto rows = rows_of(cli.id); !rows.empty() && !cli.markdown) return write_all(stdout, rows) ? exit_ok : exit_failure;
+    if (auto rows = rows_of(cli.id); !rows.empty() && !cli.markdown)
+      return write_all(stdout, rows) ? exit_ok : exit_failure;
     auto msg = fmt::format("no diagnostic or group named '{}'", cli.id);
     std::vector<std::string> names;
     for (const auto& r : all_rules()) {
@@ -56,7 +57,8 @@ void register_rules(CLI::App& app, command_action& run) {
   auto cli = std::make_shared<rules_cli>();
   auto* cmd = app.add_subcommand("rules", "List the diagnostics edsc can report, or explain one");
   takes(cmd->add_option("id", cli->id, "Explain this diagnostic, or list the rules of this group"), arg_kind::rule);
-  cmd->add_flag("--markdown", cli->markdown, "Print as Markdown: the whole catalogue (docs/rules.md), or the one rule named");
+  cmd->add_flag("--markdown", cli->markdown,
+                "Print as Markdown: the whole catalogue (docs/rules.md), or the one rule named");
   add_example(cmd, "edsc rules", "list every diagnostic");
   add_example(cmd, "edsc rules duplicate-entry", "explain one");
   add_example(cmd, "edsc rules opener", "list one group's");

@@ -11,8 +11,8 @@
 
 #include <fmt/format.h>
 
-#include "check/check_file.hpp"
 #include "base/plural.hpp"
+#include "check/check_file.hpp"
 #include "diag/render_text.hpp"
 #include "driver/commands.hpp"
 #include "driver/emitter_input.hpp"
@@ -75,11 +75,11 @@ bool load_inputs(const std::string& path, sim::state& s) {
 void warn_without_connections(const std::string& file, const model::device& dev, const sim::device& d) {
   if (!d.points.empty()) return;
   const auto nets = dev.classes.networks;
-  const auto why = (nets & model::net_ethernetip) == 0 && (nets & model::net_devicenet) != 0
-                       ? std::string("a DeviceNet EDS")
-                   : dev.connections.empty()       ? std::string("it has no ConnectionN")
-                   : dev.connections.size() == 1 ? std::string("its one ConnectionN cannot be served")
-                                                 : fmt::format("none of its {} ConnectionN can be served", dev.connections.size());
+  const auto why =
+      (nets & model::net_ethernetip) == 0 && (nets & model::net_devicenet) != 0 ? std::string("a DeviceNet EDS")
+      : dev.connections.empty()                                                 ? std::string("it has no ConnectionN")
+      : dev.connections.size() == 1 ? std::string("its one ConnectionN cannot be served")
+                                    : fmt::format("none of its {} ConnectionN can be served", dev.connections.size());
   std::string found = "its identity";
   if (!d.assemblies.empty()) found += ", " + plural(d.assemblies.size(), "assembly instance");
   if (!d.params.empty()) found += ", " + plural(d.params.size(), "parameter");
@@ -92,9 +92,10 @@ void warn_without_connections(const std::string& file, const model::device& dev,
 
 int run_sim(const sim_cli& cli) {
   if (cli.port == sim::server_options{}.io_port) {
-    print_error(fmt::format("--port {}: that is the class 1 I/O port (UDP {}); the encapsulation port must be another "
-                            "(the default is 44818)",
-                            cli.port, cli.port));
+    print_error(
+        fmt::format("--port {}: that is the class 1 I/O port (UDP {}); the encapsulation port must be another "
+                    "(the default is 44818)",
+                    cli.port, cli.port));
     return exit_failure;
   }
   auto source = read_or_report(cli.eds);
@@ -142,9 +143,10 @@ int run_sim(const sim_cli& cli) {
 
 void register_sim(CLI::App& app, command_action& run) {
   auto cli = std::make_shared<sim_cli>();
-  auto* cmd = app.add_subcommand("sim", "Serve the EDS as a virtual EtherNet/IP device: identity, assemblies, "
-                                        "parameters, the EDS for upload, Forward_Open of every ConnectionN, "
-                                        "class 1 I/O (docs/sim.md)");
+  auto* cmd = app.add_subcommand("sim",
+                                 "Serve the EDS as a virtual EtherNet/IP device: identity, assemblies, "
+                                 "parameters, the EDS for upload, Forward_Open of every ConnectionN, "
+                                 "class 1 I/O (docs/sim.md)");
   takes(cmd->add_option("file", cli->eds, "The EDS file the device is built from"), arg_kind::eds)->required();
   takes(cmd->add_option("--address", cli->address, "IPv4 address to listen on (default 0.0.0.0: every interface)"),
         arg_kind::text)

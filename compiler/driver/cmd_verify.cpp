@@ -9,8 +9,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "check/check_file.hpp"
 #include "base/plural.hpp"
+#include "check/check_file.hpp"
 #include "diag/render_text.hpp"
 #include "driver/commands.hpp"
 #include "driver/net_report.hpp"
@@ -24,7 +24,6 @@
 namespace edsc::driver {
 
 namespace {
-
 
 struct verify_cli {
   std::string eds, capture, decode, network;
@@ -125,9 +124,10 @@ int run_verify(const verify_cli& cli, const CLI::App& cmd) {
   if (!cli.live.host.empty()) {
     // A capture's options mean nothing to a live device: refused, not ignored.
     if (const auto extra = given(cmd, {"--capture", "--mac", "--network", "--decode"}); !extra.empty()) {
-      print_error(fmt::format("verify --live compares a running device with its EDS; {} {} for CAN captures and "
-                              "cannot be used with it",
-                              fmt::join(extra, ", "), extra.size() == 1 ? "is" : "are"));
+      print_error(
+          fmt::format("verify --live compares a running device with its EDS; {} {} for CAN captures and "
+                      "cannot be used with it",
+                      fmt::join(extra, ", "), extra.size() == 1 ? "is" : "are"));
       return exit_failure;
     }
     return run_verify_live(cli.live, cli.eds, cli.warning_flags, cli.format, cli.color);
@@ -139,7 +139,8 @@ int run_verify(const verify_cli& cli, const CLI::App& cmd) {
   }
   if (!cli.decode.empty()) {
     if (const auto extra = ignored_by_decode(cli); !extra.empty()) {
-      print_error(fmt::format("--decode prints a capture's conversation alone; it takes no {}", fmt::join(extra, ", ")));
+      print_error(
+          fmt::format("--decode prints a capture's conversation alone; it takes no {}", fmt::join(extra, ", ")));
       return exit_failure;
     }
     return run_decode(cli);
@@ -190,8 +191,14 @@ int run_verify(const verify_cli& cli, const CLI::App& cmd) {
       write_all(stdout, out);
       break;
     }
-    case report_format::json: reports.push_back(std::move(report)); write_all(stdout, render_json(reports, totals)); break;
-    case report_format::sarif: reports.push_back(std::move(report)); write_all(stdout, render_sarif(reports)); break;
+    case report_format::json:
+      reports.push_back(std::move(report));
+      write_all(stdout, render_json(reports, totals));
+      break;
+    case report_format::sarif:
+      reports.push_back(std::move(report));
+      write_all(stdout, render_sarif(reports));
+      break;
   }
   std::fflush(stdout);
   return totals.errors > 0 ? exit_findings : exit_ok;
@@ -206,13 +213,15 @@ void register_verify(CLI::App& app, command_action& run) {
       "Check a device against its EDS: a DeviceNet device's answers in a CAN capture (docs/verify.md), or a "
       "running EtherNet/IP device with --live (docs/live.md)");
   takes(cmd->add_option("eds", cli->eds, "The device's EDS file"), arg_kind::eds);
-  takes(cmd->add_option("--capture", cli->capture, "CAN log: candump -l/-L, candump screen output, or step/dir/can_id/data TSV"),
+  takes(cmd->add_option("--capture", cli->capture,
+                        "CAN log: candump -l/-L, candump screen output, or step/dir/can_id/data TSV"),
         arg_kind::file);
   add_number(cmd, "--mac", cli->mac, 0, 63, "Compare only the node at this MAC ID (default: every node heard)");
   takes(cmd->add_option("--network", cli->network,
                         "Judge every node of this network file (TOML, docs/network.md) instead of one EDS"),
         arg_kind::toml);
-  takes(cmd->add_option("--decode", cli->decode, "Print the decoded conversation of this log as a table, compare nothing"),
+  takes(cmd->add_option("--decode", cli->decode,
+                        "Print the decoded conversation of this log as a table, compare nothing"),
         arg_kind::file);
   add_verify_live_options(cmd, cli->live);
   add_report_options(cmd, cli->color, cli->format, cli->warning_flags);

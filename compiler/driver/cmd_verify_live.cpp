@@ -12,8 +12,8 @@
 #include "driver/net_report.hpp"
 #include "driver/progress.hpp"
 #include "driver/verify_live.hpp"
-#include "net/interrupt.hpp"
 #include "live/verify_live.hpp"
+#include "net/interrupt.hpp"
 
 namespace edsc::driver {
 
@@ -29,9 +29,12 @@ json rows_json(const std::string& host, const live::live_report& r) {
   for (const auto& row : r.rows) {
     json c = {{"check", row.check}, {"eds", row.eds}, {"device", row.device}, {"result", live::to_string(row.result)}};
     if (row.io)
-      c["io"] = {{"frames", row.io->frames},           {"frame_bytes", row.io->frame_bytes},
-                 {"run_idle", row.io->run_idle},       {"interval_ms", row.io->interval_ms},
-                 {"granted_interval_ms", row.io->granted_ms}, {"watched_ms", row.io->watched_ms},
+      c["io"] = {{"frames", row.io->frames},
+                 {"frame_bytes", row.io->frame_bytes},
+                 {"run_idle", row.io->run_idle},
+                 {"interval_ms", row.io->interval_ms},
+                 {"granted_interval_ms", row.io->granted_ms},
+                 {"watched_ms", row.io->watched_ms},
                  {"sent", row.io->sent}};
     if (row.refused) c["refused"] = {{"general", row.refused->first}, {"extended", row.refused->second}};
     checks.push_back(std::move(c));
@@ -44,8 +47,10 @@ json rows_json(const std::string& host, const live::live_report& r) {
 // JSON: a top-level "live" beside "files"; SARIF: the run's property bag.
 std::string with_rows(const std::string& report, report_format format, const json& rows) {
   auto j = json::parse(report);
-  if (format == report_format::json) j["live"] = rows;
-  else j["runs"][0]["properties"]["live"] = rows;
+  if (format == report_format::json)
+    j["live"] = rows;
+  else
+    j["runs"][0]["properties"]["live"] = rows;
   return dump(j);
 }
 
@@ -92,8 +97,9 @@ void print_device_error(const std::string& host, const live::error& e) {
 }
 
 void add_verify_live_options(CLI::App* cmd, verify_live_cli& cli) {
-  takes(cmd->add_option("--live", cli.host,
-                        "Check the running EtherNet/IP device at this address (TCP 44818) against the EDS (docs/live.md)"),
+  takes(cmd->add_option(
+            "--live", cli.host,
+            "Check the running EtherNet/IP device at this address (TCP 44818) against the EDS (docs/live.md)"),
         arg_kind::host)
       ->type_name("HOST");
   cmd->add_flag("--connections", cli.connections,
@@ -113,8 +119,9 @@ int run_verify_live(const verify_live_cli& live, const std::string& eds, const s
     return exit_failure;
   }
   if (live.watch_s > 0 && !live.connections) {
-    print_error("--watch is how long to watch the I/O of the connections that --connections opens: it needs "
-                "--connections");
+    print_error(
+        "--watch is how long to watch the I/O of the connections that --connections opens: it needs "
+        "--connections");
     return exit_failure;
   }
   check_options options;

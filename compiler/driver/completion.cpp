@@ -157,11 +157,16 @@ complete -o filenames -F _edsc edsc
 std::string zsh_text(std::string_view s) {
   std::string out;
   for (const char c : s) {
-    if (c == '\'') out += "'\\''";
-    else if (c == '[') out += '(';
-    else if (c == ']') out += ')';
-    else if (c == ':') out += " -";
-    else out += c;
+    if (c == '\'')
+      out += "'\\''";
+    else if (c == '[')
+      out += '(';
+    else if (c == ']')
+      out += ')';
+    else if (c == ':')
+      out += " -";
+    else
+      out += c;
   }
   return out;
 }
@@ -172,7 +177,8 @@ std::string zsh_action(const cli_option& o) {
   // "*.(toml)" would be read as glob qualifiers: a group only for alternatives.
   if (const char* g = glob_of(o.kind)) {
     const std::string_view glob = g;
-    return fmt::format("_files -g \"*.{}\"", glob.find('|') == std::string_view::npos ? std::string(glob) : fmt::format("({})", glob));
+    return fmt::format("_files -g \"*.{}\"",
+                       glob.find('|') == std::string_view::npos ? std::string(glob) : fmt::format("({})", glob));
   }
   if (o.kind == arg_kind::dir) return "_files -/";
   if (any_file(o.kind)) return "_files";
@@ -251,13 +257,21 @@ std::string fish(const cli_command& top) {
       lines += fmt::format("complete -c edsc {} -f -a {} -d '{}'\n", cond, s.name, fish_text(s.summary));
     for (const auto& o : c.options) {
       std::string arg;
-      if (!o.takes_value) arg = "";
-      else if (o.kind == arg_kind::word) arg = fmt::format(" -x -a '{}'", joined(o.choices));
-      else if (const char* g = glob_of(o.kind)) arg = fmt::format(" -r -k -a '(__fish_complete_suffix .{})'", std::string(g).substr(0, std::string(g).find('|')));
-      else if (o.kind == arg_kind::dir) arg = " -x -a '(__fish_complete_directories)'";
-      else if (o.kind == arg_kind::rule) arg = fmt::format(" -x -a '{}'", rule_ids());
-      else if (any_file(o.kind)) arg = " -r -F";
-      else arg = " -x";
+      if (!o.takes_value)
+        arg = "";
+      else if (o.kind == arg_kind::word)
+        arg = fmt::format(" -x -a '{}'", joined(o.choices));
+      else if (const char* g = glob_of(o.kind))
+        arg =
+            fmt::format(" -r -k -a '(__fish_complete_suffix .{})'", std::string(g).substr(0, std::string(g).find('|')));
+      else if (o.kind == arg_kind::dir)
+        arg = " -x -a '(__fish_complete_directories)'";
+      else if (o.kind == arg_kind::rule)
+        arg = fmt::format(" -x -a '{}'", rule_ids());
+      else if (any_file(o.kind))
+        arg = " -r -F";
+      else
+        arg = " -x";
       if (o.positional) {
         lines += fmt::format("complete -c edsc {}{}\n", cond, arg);
         continue;

@@ -16,9 +16,12 @@ std::string roff(std::string_view text) {
   bool line_start = true;
   for (const char c : text) {
     if (line_start && (c == '.' || c == '\'')) out += "\\&";
-    if (c == '\\') out += "\\e";
-    else if (c == '-') out += "\\-";
-    else out += c;
+    if (c == '\\')
+      out += "\\e";
+    else if (c == '-')
+      out += "\\-";
+    else
+      out += c;
     line_start = c == '\n';
   }
   return out;
@@ -122,7 +125,8 @@ std::string page(const cli_command& top, const cli_command& c, const std::string
   if (!c.subcommands.empty()) {
     out += ".SH COMMANDS\n";
     for (const auto& s : c.subcommands)
-      out += fmt::format(".TP\n\\fB{}\\fR\n{}. See \\fB{}\\fR(1).\n", roff(s.name), roff(s.summary), roff(page_name(s)));
+      out +=
+          fmt::format(".TP\n\\fB{}\\fR\n{}. See \\fB{}\\fR(1).\n", roff(s.name), roff(s.summary), roff(page_name(s)));
   }
   add_options(c, out);
   out += exit_status;

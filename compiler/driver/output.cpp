@@ -23,9 +23,7 @@ bool use_color(color_mode mode, std::FILE* stream) {
   return ::isatty(::fileno(stream)) != 0;
 }
 
-bool write_all(std::FILE* stream, std::string_view s) {
-  return std::fwrite(s.data(), 1, s.size(), stream) == s.size();
-}
+bool write_all(std::FILE* stream, std::string_view s) { return std::fwrite(s.data(), 1, s.size(), stream) == s.size(); }
 
 void print_error(std::string_view message) {
   std::string line = "edsc: error: ";
@@ -53,8 +51,9 @@ void add_report_options(CLI::App* cmd, color_mode& color, report_format& format,
 }
 
 void add_stdin_filename(CLI::App* cmd, std::string& name) {
-  takes(cmd->add_option("--stdin-filename", name, "Name standard input ('-') this way in diagnostics (default: <stdin>)"),
-        arg_kind::text)
+  takes(
+      cmd->add_option("--stdin-filename", name, "Name standard input ('-') this way in diagnostics (default: <stdin>)"),
+      arg_kind::text)
       ->type_name("NAME");
 }
 
@@ -94,8 +93,7 @@ bool report_not_text(const parse_result& parsed, const source_file& src) {
 }
 
 std::unique_ptr<source_file> read_or_report(const std::string& path, const std::string& stdin_name) {
-  auto read = io::is_stdin(path) ? io::read_stdin(stdin_name)
-                                 : io::read_source(path);
+  auto read = io::is_stdin(path) ? io::read_stdin(stdin_name) : io::read_source(path);
   if (auto* err = std::get_if<io::io_error>(&read)) {
     print_error(err->message);
     return nullptr;

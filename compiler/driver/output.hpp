@@ -53,7 +53,6 @@ void add_stdin_filename(CLI::App* cmd, std::string& name);
 
 // Reads an input file, or standard input for `-` (named `stdin_name`, else
 // `<stdin>`); on failure prints why and returns null.
-[[nodiscard]] std::unique_ptr<source_file> read_or_report(const std::string& path,
-                                                          const std::string& stdin_name = {});
+[[nodiscard]] std::unique_ptr<source_file> read_or_report(const std::string& path, const std::string& stdin_name = {});
 
 }  // namespace edsc::driver

@@ -107,7 +107,8 @@ std::optional<std::string> option_hint(const CLI::App& app, int argc, const char
     if (std::find(known.begin(), known.end(), w) != known.end()) continue;
     if (const auto near = nearest(w, longs)) return fmt::format("unknown option '{}'; did you mean '{}'?", w, *near);
     std::string path;
-    for (const auto* c = &cmd; c != nullptr; c = c->get_parent()) path = path.empty() ? c->get_name() : c->get_name() + " " + path;
+    for (const auto* c = &cmd; c != nullptr; c = c->get_parent())
+      path = path.empty() ? c->get_name() : c->get_name() + " " + path;
     return fmt::format("unknown option '{}' ({} --help lists the options)", w, path);
   }
   return std::nullopt;

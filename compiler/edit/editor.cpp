@@ -2,11 +2,11 @@
 
 #include <fmt/format.h>
 
+#include "base/utf8.hpp"
 #include "edit/locate.hpp"
 #include "edit/value_check.hpp"
 #include "parse/parser.hpp"
 #include "schema/text.hpp"
-#include "base/utf8.hpp"
 
 namespace edsc::edit {
 
@@ -14,8 +14,7 @@ namespace {
 
 std::pair<std::string_view, std::string_view> split_assignment(std::string_view a, const char* example) {
   const auto eq = a.find('=');
-  if (eq == std::string_view::npos)
-    throw edit_error(fmt::format("'{}' has no '='; write {}", a, example));
+  if (eq == std::string_view::npos) throw edit_error(fmt::format("'{}' has no '='; write {}", a, example));
   auto lhs = a.substr(0, eq);
   auto rhs = a.substr(eq + 1);
   while (!lhs.empty() && lhs.back() == ' ') lhs.remove_suffix(1);
@@ -43,8 +42,8 @@ std::vector<std::string_view> pieces_of(std::string_view v) {
 bool valid_section_name(std::string_view n) {
   if (n.empty() || n.front() == ' ' || n.back() == ' ' || n.find("  ") != std::string_view::npos) return false;
   for (char c : n) {
-    const bool ok = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || schema::is_digit(c) ||
-                    c == ' ' || c == '_' || c == '.' || c == '/' || c == '\\' || c == '-';
+    const bool ok = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || schema::is_digit(c) || c == ' ' || c == '_' ||
+                    c == '.' || c == '/' || c == '\\' || c == '-';
     if (!ok) return false;
   }
   return true;
@@ -170,11 +169,12 @@ void editor::set(std::string_view assignment) {
 }
 
 void editor::add_entry(std::string_view assignment) {
-  const auto [lhs, rhs] = split_assignment(assignment, "Section.Keyword=fields, e.g. IO_Info.Output1=1, 0, 0x0001, \"Out\"");
+  const auto [lhs, rhs] =
+      split_assignment(assignment, "Section.Keyword=fields, e.g. IO_Info.Output1=1, 0, 0x0001, \"Out\"");
   const auto a = resolve_entry(tree_, lhs, true);
   if (a.entry != cst::npos)
-    throw edit_error(fmt::format("[{}] already has '{}'; change it with --set or remove it first", a.section_name,
-                                 a.keyword));
+    throw edit_error(
+        fmt::format("[{}] already has '{}'; change it with --set or remove it first", a.section_name, a.keyword));
   for (char c : a.keyword)
     if (!(schema::is_digit(c) || c == '_' || (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z')))
       throw edit_error(fmt::format("'{}' is not a keyword (letters, digits and '_')", a.keyword));
@@ -187,8 +187,8 @@ void editor::add_entry(std::string_view assignment) {
   for (std::uint32_t i = 0; k != nullptr && i < fields.size(); ++i) {
     const auto* fd = schema::field_at(*k, i);
     if (fd == nullptr)
-      throw edit_error(fmt::format("'{}' takes at most {} fields: {}", a.keyword, k->fields.size(),
-                                   field_choices(*k, 0)));
+      throw edit_error(
+          fmt::format("'{}' takes at most {} fields: {}", a.keyword, k->fields.size(), field_choices(*k, 0)));
     check_value(fd, fields[i], fmt::format("{}.{} field {}", a.section_name, a.keyword, i + 1));
   }
   // Numbered keywords keep the user's number; the stem takes the schema's spelling.
@@ -223,7 +223,8 @@ void editor::add_section(std::string_view name) {
     throw edit_error(fmt::format("'{}' is not a section name (letters, digits, single spaces and _ . / \\ -)", name));
   if (find_section(tree_, name) != cst::npos) throw edit_error(fmt::format("the file already has [{}]", name));
   const auto* s = schema::find_section(name);
-  const std::string canonical = s != nullptr && schema::iequals(s->name, name) ? std::string(s->name) : std::string(name);
+  const std::string canonical =
+      s != nullptr && schema::iequals(s->name, name) ? std::string(s->name) : std::string(name);
   log_.push_back(fmt::format("add section [{}]", canonical));
   commit({new_section(canonical, "")});
 }

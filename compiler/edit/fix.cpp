@@ -16,10 +16,14 @@ constexpr int max_passes = 8;
 std::string shown(std::string_view s) {
   std::string out;
   for (char c : s) {
-    if (c == '\n') out += "\\n";
-    else if (c == '\r') out += "\\r";
-    else if (c == '\t') out += "\\t";
-    else out.push_back(c);
+    if (c == '\n')
+      out += "\\n";
+    else if (c == '\r')
+      out += "\\r";
+    else if (c == '\t')
+      out += "\\t";
+    else
+      out.push_back(c);
   }
   return out;
 }
@@ -57,8 +61,8 @@ fix_result fix_text(const std::string& path, std::string text, const check_optio
       if (d.fixits.empty() || clash) continue;
       for (const auto& f : d.fixits) {
         const auto pos = a->source->position(f.range.begin);
-        this_pass.push_back({fmt::format("{}:{}:{}", path, pos.line, pos.column),
-                             std::string(rule_of(d.id).name), d.message, describe_change(*a->source, f), pass});
+        this_pass.push_back({fmt::format("{}:{}:{}", path, pos.line, pos.column), std::string(rule_of(d.id).name),
+                             d.message, describe_change(*a->source, f), pass});
       }
       changes.insert(changes.end(), mine.begin(), mine.end());
     }

@@ -18,11 +18,11 @@ struct applied_fix {
 };
 
 struct fix_result {
-  std::string text;                   // the repaired bytes
-  std::vector<applied_fix> applied;   // in order of passes, then position
-  diagnostics remaining;              // findings of the final text that have no fix-it
+  std::string text;                           // the repaired bytes
+  std::vector<applied_fix> applied;           // in order of passes, then position
+  diagnostics remaining;                      // findings of the final text that have no fix-it
   std::unique_ptr<source_file> final_source;  // `remaining` points into it
-  bool converged = true;              // false if fix-its kept appearing (a rule bug)
+  bool converged = true;                      // false if fix-its kept appearing (a rule bug)
 };
 
 // One fix-it in words: "insert ','", "replace 'input1' with 'Input1'".

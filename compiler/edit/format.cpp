@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <vector>
 
+#include "base/utf8.hpp"
 #include "edit/splice.hpp"
 #include "schema/text.hpp"
-#include "base/utf8.hpp"
 
 namespace edsc::edit {
 
@@ -108,7 +108,8 @@ std::optional<std::string> format(const cst::tree& t, const format_options& opti
       return std::nullopt;
     }
   }
-  const auto first_section = t.sections.empty() ? static_cast<std::uint32_t>(t.tokens.size()) : t.sections[0].first_token;
+  const auto first_section =
+      t.sections.empty() ? static_cast<std::uint32_t>(t.tokens.size()) : t.sections[0].first_token;
   const auto preamble = scan(t, 0, first_section, false);
 
   std::vector<section_out> sections;
@@ -122,8 +123,10 @@ std::optional<std::string> format(const cst::tree& t, const format_options& opti
     auto take = [&](std::uint32_t to) {
       auto g = scan(t, from, to, true);
       if (!g.same_line.empty()) {
-        if (so.entries.empty()) so.header_comment = g.same_line;
-        else so.entries.back().trailing = g.same_line;
+        if (so.entries.empty())
+          so.header_comment = g.same_line;
+        else
+          so.entries.back().trailing = g.same_line;
       }
       pending.insert(pending.end(), g.notes.begin(), g.notes.end());
       blank = g.blank_after;

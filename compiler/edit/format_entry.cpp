@@ -111,10 +111,11 @@ void format_entry(const cst::tree& t, const cst::entry& e, std::string_view trai
     } else {
       unit* next = nullptr;
       for (auto& u : units)
-        if (next == nullptr && u.where.begin >= tok.where.end)
-          next = &u;
-      if (next != nullptr) next->leading.push_back(text);
-      else after.push_back(text);
+        if (next == nullptr && u.where.begin >= tok.where.end) next = &u;
+      if (next != nullptr)
+        next->leading.push_back(text);
+      else
+        after.push_back(text);
     }
   }
 

@@ -68,8 +68,8 @@ address resolve_entry(const cst::tree& t, std::string_view path, bool entry_may_
   a.section = require_section(t, a.section_name);
   a.entry = find_entry(t, a.section, a.keyword);
   if (a.entry == cst::npos && !entry_may_be_missing)
-    throw edit_error(fmt::format("no entry '{}' in [{}]; its entries are {}", a.keyword, a.section_name,
-                                 entry_list(t, a.section)));
+    throw edit_error(
+        fmt::format("no entry '{}' in [{}]; its entries are {}", a.keyword, a.section_name, entry_list(t, a.section)));
   return a;
 }
 
@@ -94,10 +94,10 @@ address resolve_field(const cst::tree& t, std::string_view path, std::uint32_t& 
       auto a = resolve_entry(t, path);
       const auto& e = t.entries[a.entry];
       if (e.fields_count > 1)
-        throw edit_error(fmt::format("'{}' has {} fields; name one, e.g. {}.1{}", a.keyword, e.fields_count, path,
-                                     keyword_of(t, e) != nullptr
-                                         ? fmt::format(" (fields: {})", field_choices(*keyword_of(t, e), e.fields_count))
-                                         : ""));
+        throw edit_error(fmt::format(
+            "'{}' has {} fields; name one, e.g. {}.1{}", a.keyword, e.fields_count, path,
+            keyword_of(t, e) != nullptr ? fmt::format(" (fields: {})", field_choices(*keyword_of(t, e), e.fields_count))
+                                        : ""));
       index = 0;
       return a;
     }
@@ -105,8 +105,8 @@ address resolve_field(const cst::tree& t, std::string_view path, std::uint32_t& 
   // One dot: a two-part address whose section or entry is missing; say which.
   if (last != std::string_view::npos && path.find('.') == last) (void)resolve_entry(t, path);
   if (last == std::string_view::npos || last + 1 == path.size())
-    throw edit_error(fmt::format("'{}' is not a field address; write Section.Keyword.field, e.g. IO_Info.Input1.size",
-                                 path));
+    throw edit_error(
+        fmt::format("'{}' is not a field address; write Section.Keyword.field, e.g. IO_Info.Input1.size", path));
   auto a = resolve_entry(t, path.substr(0, last));
   a.field = std::string(path.substr(last + 1));
   const auto& e = t.entries[a.entry];
@@ -114,7 +114,7 @@ address resolve_field(const cst::tree& t, std::string_view path, std::uint32_t& 
   std::uint32_t n = 0;
   if (schema::parse_u32(a.field, n)) {
     const std::uint32_t limit = k != nullptr && k->tail.empty() ? static_cast<std::uint32_t>(k->fields.size())
-                                                                  : std::max<std::uint32_t>(e.fields_count, 1);
+                                                                : std::max<std::uint32_t>(e.fields_count, 1);
     if (n == 0 || n > std::max(limit, e.fields_count))
       throw edit_error(fmt::format("'{}' has no field {}; fields are numbered 1 to {}", a.keyword, n,
                                    std::max(limit, e.fields_count)));
@@ -133,9 +133,10 @@ address resolve_field(const cst::tree& t, std::string_view path, std::uint32_t& 
     throw edit_error(fmt::format("'{}' has no field named '{}'; its fields are {}", a.keyword, a.field,
                                  field_choices(*k, e.fields_count)));
   }
-  throw edit_error(fmt::format("the fields of '{}' have no names (its layout is not in the schema); address them "
-                               "by number, 1 to {}",
-                               a.keyword, e.fields_count));
+  throw edit_error(
+      fmt::format("the fields of '{}' have no names (its layout is not in the schema); address them "
+                  "by number, 1 to {}",
+                  a.keyword, e.fields_count));
 }
 
 }  // namespace edsc::edit

@@ -73,8 +73,9 @@ void devicenet_io(const device_spec& s, std::string& out) {
 
 void ethernetip_io(const device_spec& s, std::string& out) {
   if (s.input == 0 || s.output == 0)
-    throw edit_error("an EtherNet/IP device made by edsc new has an exclusive-owner connection: give "
-                     "--input-bytes and --output-bytes (1 byte or more each)");
+    throw edit_error(
+        "an EtherNet/IP device made by edsc new has an exclusive-owner connection: give "
+        "--input-bytes and --output-bytes (1 byte or more each)");
   out += "[Assembly]\n";
   out += fmt::format("Assem100 = {}, \"\", {}, 0x0000,,;\n", quote(s.input_name), s.input);
   out += fmt::format("Assem150 = {}, \"\", {}, 0x0000,,;\n", quote(s.output_name), s.output);
@@ -128,13 +129,15 @@ std::string make_eds(const device_spec& spec, const std::string& eol) {
   if (!s.catalog.empty()) out += fmt::format("Catalog = {};\n", quote(s.catalog));
   out += "[Device Classification]\n";
   out += fmt::format("Class1 = {};\n", s.network == "devicenet" ? "DeviceNet" : "EtherNetIP");
-  if (s.network == "devicenet") devicenet_io(s, out);
-  else ethernetip_io(s, out);
+  if (s.network == "devicenet")
+    devicenet_io(s, out);
+  else
+    ethernetip_io(s, out);
 
   const source_file src("<new>", out);
   const auto parsed = parse(src);
-  if (!parsed.diags.empty()) throw edit_error(fmt::format("internal: generated text does not parse: {}",
-                                                          parsed.diags.front().message));
+  if (!parsed.diags.empty())
+    throw edit_error(fmt::format("internal: generated text does not parse: {}", parsed.diags.front().message));
   std::string why;
   auto formatted = format(parsed.tree, format_options{eol}, why);
   if (!formatted) throw edit_error("internal: " + why);

@@ -15,11 +15,11 @@ struct device_spec {
   std::uint32_t product_code = 0;
   std::string name;
   std::string catalog;
-  std::string description;        // [File] DescText; empty: "<name> EDS file"
-  std::string revision = "1.1";   // device MajRev.MinRev
-  std::string network = "devicenet";  // devicenet | ethernetip
-  std::uint32_t input = 0;        // bytes produced by the device
-  std::uint32_t output = 0;       // bytes consumed by the device
+  std::string description;               // [File] DescText; empty: "<name> EDS file"
+  std::string revision = "1.1";          // device MajRev.MinRev
+  std::string network = "devicenet";     // devicenet | ethernetip
+  std::uint32_t input = 0;               // bytes produced by the device
+  std::uint32_t output = 0;              // bytes consumed by the device
   std::vector<std::string> connections;  // DeviceNet: poll, strobe, cos, cyclic (first = Default)
   std::string input_name = "Input";
   std::string output_name = "Output";

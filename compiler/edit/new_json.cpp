@@ -37,11 +37,10 @@ device_spec spec_from_json(const std::string& json_text, const std::vector<std::
     throw edit_error(fmt::format("device JSON does not parse: {}", e.what()));
   }
   if (!j.is_object()) throw edit_error("device JSON must be an object");
-  static const char* keys[] = {"vendor", "vendor_name", "product_type", "product_type_name", "product_code",
-                               "name", "catalog", "description", "revision", "network", "input_bytes", "output_bytes",
-                               "input", "output",
-                               "connections", "input_name", "output_name", "input_help", "output_help",
-                               "date", "time"};
+  static const char* keys[] = {
+      "vendor",      "vendor_name", "product_type", "product_type_name", "product_code", "name",  "catalog",
+      "description", "revision",    "network",      "input_bytes",       "output_bytes", "input", "output",
+      "connections", "input_name",  "output_name",  "input_help",        "output_help",  "date",  "time"};
   for (const auto& [k, v] : j.items()) {
     bool known = false;
     for (const auto* key : keys) known = known || k == key;

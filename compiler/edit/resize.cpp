@@ -28,9 +28,10 @@ resize_spec parse_spec(std::string_view spec) {
   const bool io_keyword = schema::iequals(parts.stem, "Input") || schema::iequals(parts.stem, "Output");
   std::uint32_t n = 0;
   if (eq == std::string_view::npos || !io_keyword || !schema::parse_u32(parts.digits, n))
-    throw edit_error(fmt::format("'{}' is not a resize; write InputN=bytes or OutputN=bytes[:significant bits], "
-                                 "e.g. Input1=3",
-                                 spec));
+    throw edit_error(
+        fmt::format("'{}' is not a resize; write InputN=bytes or OutputN=bytes[:significant bits], "
+                    "e.g. Input1=3",
+                    spec));
   r.keyword = fmt::format("{}{}", schema::iequals(parts.stem, "Input") ? "Input" : "Output", n);
   auto rhs = spec.substr(eq + 1);
   const auto colon = rhs.find(':');
@@ -39,8 +40,8 @@ resize_spec parse_spec(std::string_view spec) {
   if (colon != std::string_view::npos) {
     r.bits_given = true;
     if (!schema::parse_u32(rhs.substr(colon + 1), r.bits) || r.bits > 8u * r.size)
-      throw edit_error(fmt::format("'{}': significant bits must be 0 (all) to {} for {} bytes", spec, 8u * r.size,
-                                   r.size));
+      throw edit_error(
+          fmt::format("'{}': significant bits must be 0 (all) to {} for {} bytes", spec, 8u * r.size, r.size));
   }
   return r;
 }
@@ -56,15 +57,16 @@ std::uint64_t integer_of(std::string_view text, std::string_view what) {
 std::pair<std::uint32_t, std::string> adjust_bits(std::uint64_t old_size, std::uint64_t old_bits, std::uint32_t size) {
   if (old_bits == 0) return {0, "significant bits stay 0 (every bit significant)"};
   if (old_bits == 8 * old_size)
-    return {8 * size, fmt::format("significant bits {} -> {}: every bit of the data stays significant", old_bits,
-                                  8 * size)};
+    return {8 * size,
+            fmt::format("significant bits {} -> {}: every bit of the data stays significant", old_bits, 8 * size)};
   if (old_bits <= 8ull * size && (size == 0 || old_bits > 8ull * (size - 1)))
     return {static_cast<std::uint32_t>(old_bits),
             fmt::format("significant bits stay {}: they still end in the last byte", old_bits)};
-  return {8 * size,
-          fmt::format("significant bits {} -> {}: {} bits described the old {}-byte layout and would leave bytes of the "
-                      "new one unused; narrow it with --resize {{}}={}:N if some bits carry nothing",
-                      old_bits, 8 * size, old_bits, old_size, size)};
+  return {
+      8 * size,
+      fmt::format("significant bits {} -> {}: {} bits described the old {}-byte layout and would leave bytes of the "
+                  "new one unused; narrow it with --resize {{}}={}:N if some bits carry nothing",
+                  old_bits, 8 * size, old_bits, old_size, size)};
 }
 
 }  // namespace
@@ -76,7 +78,8 @@ void editor::resize(std::string_view spec) {
   const auto ei = find_entry(tree_, io, r.keyword);
   if (ei == cst::npos) throw edit_error(fmt::format("[IO_Info] has no {} to resize", r.keyword));
   const auto& e = tree_.entries[ei];
-  if (e.fields_count < 2) throw edit_error(fmt::format("{} has no significant-bits field to keep consistent", r.keyword));
+  if (e.fields_count < 2)
+    throw edit_error(fmt::format("{} has no significant-bits field to keep consistent", r.keyword));
   const auto old_size = integer_of(tree_.text(tree_.field_of(e, 0).where), "size");
   const auto old_bits = integer_of(tree_.text(tree_.field_of(e, 1).where), "significant bits");
   if (old_size == r.size) throw edit_error(fmt::format("{} is already {} bytes", r.keyword, r.size));
@@ -102,9 +105,10 @@ void editor::resize(std::string_view spec) {
   } else {
     const auto twin = find_entry(tree_, variant, r.keyword);
     if (twin != cst::npos && tree_.text(tree_.entries[twin].where) != old_entry)
-      throw edit_error(fmt::format("[Variant_IO_Info] already holds another {}; remove it first with "
-                                   "--remove-entry Variant_IO_Info.{}",
-                                   r.keyword, r.keyword));
+      throw edit_error(
+          fmt::format("[Variant_IO_Info] already holds another {}; remove it first with "
+                      "--remove-entry Variant_IO_Info.{}",
+                      r.keyword, r.keyword));
     if (twin == cst::npos) {
       const auto at = end_of_section_content(variant);
       changes.push_back({{at, at}, eol_ + entry_indent(variant) + old_entry});

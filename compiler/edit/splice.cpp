@@ -74,9 +74,12 @@ std::uint32_t line_end(std::string_view text, std::uint32_t offset) {
 }
 
 std::uint32_t after_eol(std::string_view text, std::uint32_t end) {
-  if (end < text.size() && text[end] == '\r') ++end;
-  else if (end < text.size() && text[end] == '\n') return end + 1;
-  else return end;
+  if (end < text.size() && text[end] == '\r')
+    ++end;
+  else if (end < text.size() && text[end] == '\n')
+    return end + 1;
+  else
+    return end;
   if (end < text.size() && text[end] == '\n') ++end;
   return end;
 }

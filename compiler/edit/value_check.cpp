@@ -58,14 +58,12 @@ std::string mismatch(const schema::field_desc& fd, std::string_view text) {
   bool lexed = false;
   switch (fd.type) {
     case vt::integer:
-    case vt::number_ref:
-      return is_integer_of(text, fd.cip, why) ? "" : why;
+    case vt::number_ref: return is_integer_of(text, fd.cip, why) ? "" : why;
     case vt::real: {
       double d = 0;
       return model::decode::real(text, d) ? "" : "a real number such as 1.5 or .004";
     }
-    case vt::string:
-      return quoted(text) ? "" : "a quoted string";
+    case vt::string: return quoted(text) ? "" : "a quoted string";
     case vt::date: {
       model::date d;
       return model::decode::date(text, d, lexed) ? "" : "a date mm-dd-yyyy";
@@ -91,16 +89,14 @@ std::string mismatch(const schema::field_desc& fd, std::string_view text) {
         if (w == text) return "";
       if (schema::is_vendor_specific(text)) return "";
       return fmt::format("one of {} (or a vendor-specific VendorID_Name)", words_of(fd));
-    case vt::reference:
-      return is_reference(text, fd.refs) ? "" : fmt::format("a reference: {}", refs_of(fd.refs));
+    case vt::reference: return is_reference(text, fd.refs) ? "" : fmt::format("a reference: {}", refs_of(fd.refs));
     case vt::int_or_ref:
       if (is_reference(text, fd.refs)) return "";
       return is_integer_of(text, fd.cip, why) ? "" : fmt::format("{} or a reference: {}", why, refs_of(fd.refs));
     case vt::member:
     case vt::typed:
     case vt::stringi:
-    case vt::any:
-      return "";
+    case vt::any: return "";
   }
   return "";
 }
@@ -135,7 +131,8 @@ std::vector<std::string> split_fields(std::string_view text, std::string_view wh
                                  parsed.diags.empty() ? "" : fmt::format(" ({})", parsed.diags.front().message)));
   const auto& e = parsed.tree.entries[0];
   std::vector<std::string> out;
-  for (std::uint32_t i = 0; i < e.fields_count; ++i) out.emplace_back(parsed.tree.text(parsed.tree.field_of(e, i).where));
+  for (std::uint32_t i = 0; i < e.fields_count; ++i)
+    out.emplace_back(parsed.tree.text(parsed.tree.field_of(e, i).where));
   return out;
 }
 

@@ -53,8 +53,8 @@ json identity(const detail::writer& w, const model::device& d) {
   json file;
   file["line"] = f.section == model::none ? json(nullptr) : json(w.line(d.tree->sections[f.section].header.begin));
   const auto* fk = schema::find_section("File");
-  const model::value* fv[] = {&f.desc_text, &f.create_date, &f.create_time, &f.mod_date, &f.mod_time,
-                              &f.revision, &f.home_url, &f.exclude, &f.eds_file_crc};
+  const model::value* fv[] = {&f.desc_text, &f.create_date, &f.create_time, &f.mod_date,    &f.mod_time,
+                              &f.revision,  &f.home_url,    &f.exclude,     &f.eds_file_crc};
   for (std::size_t i = 0; i < std::size(fv); ++i) file[std::string(fk->keywords[i].stem)] = w.value(*fv[i]);
   j["file"] = std::move(file);
 
@@ -62,9 +62,9 @@ json identity(const detail::writer& w, const model::device& d) {
   json dev;
   dev["line"] = id.section == model::none ? json(nullptr) : json(w.line(d.tree->sections[id.section].header.begin));
   const auto* dk = schema::find_section("Device");
-  const model::value* dv[] = {&id.vend_code, &id.vend_name, &id.prod_type, &id.prod_type_str, &id.prod_code,
-                              &id.maj_rev, &id.min_rev, &id.prod_name, &id.catalog, &id.icon,
-                              &id.icon_contents, &id.application_profiles_assembly};
+  const model::value* dv[] = {&id.vend_code, &id.vend_name, &id.prod_type,     &id.prod_type_str,
+                              &id.prod_code, &id.maj_rev,   &id.min_rev,       &id.prod_name,
+                              &id.catalog,   &id.icon,      &id.icon_contents, &id.application_profiles_assembly};
   for (std::size_t i = 0; i < std::size(dv); ++i) {
     const std::string key(dk->keywords[i].stem);
     if (dv[i] == &id.icon_contents && id.icon_contents.ok()) {
@@ -74,8 +74,8 @@ json identity(const detail::writer& w, const model::device& d) {
       icon["decoded_bytes"] = id.icon_data.size();
       const auto& b = id.icon_data;
       icon["format"] = (b.size() >= 4 && b[0] == 0 && b[1] == 0 && b[2] == 1 && b[3] == 0) ? "ico"
-                       : (b.size() >= 2 && b[0] == 'B' && b[1] == 'M')                   ? "bmp"
-                                                                                         : "unknown";
+                       : (b.size() >= 2 && b[0] == 'B' && b[1] == 'M')                     ? "bmp"
+                                                                                           : "unknown";
       dev[key] = std::move(icon);
     } else {
       dev[key] = w.value(*dv[i]);
@@ -107,7 +107,8 @@ json identity(const detail::writer& w, const model::device& d) {
 json io_json(const detail::writer& w, const model::device& d, const model::io_info& io) {
   if (io.section == model::none) return nullptr;
   auto mask_of = [&](const model::value& v) {
-    return v.is_integer() ? mask_names(v.magnitude, {"poll", "strobe", "cos", "cyclic", "multicast_poll"}) : json::array();
+    return v.is_integer() ? mask_names(v.magnitude, {"poll", "strobe", "cos", "cyclic", "multicast_poll"})
+                          : json::array();
   };
   json j;
   j["line"] = w.line(d.tree->sections[io.section].header.begin);
@@ -207,12 +208,13 @@ json to_json(const model::device& d, const source_file& src) {
   j["sections"] = std::move(secs);
 
   static constexpr std::string_view reasons[] = {"unknown_section", "vendor_section", "unknown_keyword",
-                                                 "vendor_keyword", "duplicate", "extra_fields",
+                                                 "vendor_keyword",  "duplicate",      "extra_fields",
                                                  "outside_section"};
   json unknown = json::array();
   for (const auto& u : d.unknown) {
     json e;
-    e["section"] = u.section == cst::npos ? json(nullptr) : json(detail::to_utf8(d.tree->text(d.tree->sections[u.section].name)));
+    e["section"] =
+        u.section == cst::npos ? json(nullptr) : json(detail::to_utf8(d.tree->text(d.tree->sections[u.section].name)));
     e["keyword"] = detail::to_utf8(u.keyword);
     e["line"] = w.line(d.tree->entries[u.entry].where.begin);
     e["reason"] = reasons[static_cast<int>(u.reason)];

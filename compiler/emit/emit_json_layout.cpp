@@ -23,10 +23,12 @@ void named(const detail::writer& w, json& j, const T& obj, const std::array<mode
 
 json trigger_json(const model::trigger_transport& t) {
   json j;
-  j["transport_classes"] = mask_names(t.transport_classes, {"class0", "class1", "class2", "class3", "class4", "class5", "class6"});
+  j["transport_classes"] =
+      mask_names(t.transport_classes, {"class0", "class1", "class2", "class3", "class4", "class5", "class6"});
   j["transport_class_bits"] = t.transport_classes;
-  j["triggers"] = mask_names((t.trigger_cyclic ? 1u : 0u) | (t.trigger_cos ? 2u : 0u) | (t.trigger_application ? 4u : 0u),
-                             {"cyclic", "change_of_state", "application"});
+  j["triggers"] =
+      mask_names((t.trigger_cyclic ? 1u : 0u) | (t.trigger_cos ? 2u : 0u) | (t.trigger_application ? 4u : 0u),
+                 {"cyclic", "change_of_state", "application"});
   j["application_types"] = mask_names((t.listen_only ? 1u : 0u) | (t.input_only ? 2u : 0u) |
                                           (t.exclusive_owner ? 4u : 0u) | (t.redundant_owner ? 8u : 0u),
                                       {"listen_only", "input_only", "exclusive_owner", "redundant_owner"});
@@ -40,18 +42,18 @@ json direction_json(const model::direction_params& d) {
   j["fixed"] = d.fixed;
   j["variable"] = d.variable;
   j["real_time_format"] = d.real_time_format;
-  j["connection_types"] = mask_names((d.type_null ? 1u : 0u) | (d.type_multicast ? 2u : 0u) | (d.type_p2p ? 4u : 0u) |
-                                         (d.type_reserved ? 8u : 0u),
-                                     {"null", "multicast", "point_to_point", "reserved"});
-  j["priorities"] = mask_names((d.prio_low ? 1u : 0u) | (d.prio_high ? 2u : 0u) | (d.prio_scheduled ? 4u : 0u) |
-                                   (d.prio_reserved ? 8u : 0u),
-                               {"low", "high", "scheduled", "reserved"});
+  j["connection_types"] = mask_names(
+      (d.type_null ? 1u : 0u) | (d.type_multicast ? 2u : 0u) | (d.type_p2p ? 4u : 0u) | (d.type_reserved ? 8u : 0u),
+      {"null", "multicast", "point_to_point", "reserved"});
+  j["priorities"] = mask_names(
+      (d.prio_low ? 1u : 0u) | (d.prio_high ? 2u : 0u) | (d.prio_scheduled ? 4u : 0u) | (d.prio_reserved ? 8u : 0u),
+      {"low", "high", "scheduled", "reserved"});
   return j;
 }
 
 std::string_view assembly_kind_name(model::assembly_kind k) {
-  static constexpr std::string_view n[] = {"assem", "assem_exa", "proxy_assem", "proxied_assem",
-                                           "proxy_assem_exa", "proxied_assem_exa"};
+  static constexpr std::string_view n[] = {"assem",         "assem_exa",       "proxy_assem",
+                                           "proxied_assem", "proxy_assem_exa", "proxied_assem_exa"};
   return n[static_cast<int>(k)];
 }
 
@@ -116,28 +118,28 @@ void layout_json(const detail::writer& w, const model::device& d, json& out) {
 
   const auto& ck = desc("Connection Manager", "Connection1");
   auto connections_json = [&](const std::vector<model::connection>& list) {
-  json conns = json::array();
-  for (const auto& c : list) {
-    static constexpr std::string_view kinds[] = {"connection", "proxy_connect", "proxied_connect"};
-    json j;
-    w.head(j, c.from);
-    j["number"] = c.number;
-    j["kind"] = kinds[static_cast<int>(c.kind)];
-    named(w, j, c, model::slots::connection, ck);
-    j["trigger_transport_bits"] = c.decoded ? trigger_json(c.tt) : json(nullptr);
-    if (c.decoded) {
-      json p;
-      p["o_to_t"] = direction_json(c.cp.ot);
-      p["t_to_o"] = direction_json(c.cp.to);
-      p["reserved_bits"] = c.cp.reserved;
-      j["parameter_bits"] = std::move(p);
-    } else {
-      j["parameter_bits"] = nullptr;
+    json conns = json::array();
+    for (const auto& c : list) {
+      static constexpr std::string_view kinds[] = {"connection", "proxy_connect", "proxied_connect"};
+      json j;
+      w.head(j, c.from);
+      j["number"] = c.number;
+      j["kind"] = kinds[static_cast<int>(c.kind)];
+      named(w, j, c, model::slots::connection, ck);
+      j["trigger_transport_bits"] = c.decoded ? trigger_json(c.tt) : json(nullptr);
+      if (c.decoded) {
+        json p;
+        p["o_to_t"] = direction_json(c.cp.ot);
+        p["t_to_o"] = direction_json(c.cp.to);
+        p["reserved_bits"] = c.cp.reserved;
+        j["parameter_bits"] = std::move(p);
+      } else {
+        j["parameter_bits"] = nullptr;
+      }
+      if (!c.extra.empty()) j["extra"] = w.values(c.extra);
+      conns.push_back(std::move(j));
     }
-    if (!c.extra.empty()) j["extra"] = w.values(c.extra);
-    conns.push_back(std::move(j));
-  }
-  return conns;
+    return conns;
   };
   out["connections"] = connections_json(d.connections);
   out["proxy_connections"] = connections_json(d.proxy_connections);

@@ -68,7 +68,10 @@ json params_json(const detail::writer& w, const model::device& d, const schema::
       j[std::string(pk.fields[i].name)] = w.value(p.*model::slots::param[i]);
       if (i == 3) j["descriptor_bits"] = descriptor_bits(p.descriptor);
     }
-    j["enum"] = p.enum_index == model::none ? json(nullptr) : json(w.ref_name({.number = p.number, .target = p.enum_index, .kind = model::enum_ref_kind(p.kind)}));
+    j["enum"] =
+        p.enum_index == model::none
+            ? json(nullptr)
+            : json(w.ref_name({.number = p.number, .target = p.enum_index, .kind = model::enum_ref_kind(p.kind)}));
     j["enum_par"] = p.enum_par_index != model::none;
     if (!p.extra.empty()) j["extra"] = w.values(p.extra);
     params.push_back(std::move(j));

@@ -20,28 +20,20 @@ struct need {
 // connections with the assemblies and parameters they name, [Capacity]
 // counts, every ParamN. The OpENer project is built from the same facts.
 constexpr need header_needs[] = {
-    {"Device", "VendCode"}, {"Device", "ProdType"}, {"Device", "ProdCode"}, {"Device", "MajRev"},
-    {"Device", "MinRev"},   {"Device", "ProdName"}, {"Device", "Catalog"},  {"Device", "VendName"},
-    {"Device Classification", "Class#"},
-    {"IO_Info", ""},
-    {"Connection Manager#", ""},
-    {"Assembly", "Assem#"},
-    {"Capacity", "Max*"},
-    {"Params", "Param#"},
+    {"Device", "VendCode"}, {"Device", "ProdType"},      {"Device", "ProdCode"},
+    {"Device", "MajRev"},   {"Device", "MinRev"},        {"Device", "ProdName"},
+    {"Device", "Catalog"},  {"Device", "VendName"},      {"Device Classification", "Class#"},
+    {"IO_Info", ""},        {"Connection Manager#", ""}, {"Assembly", "Assem#"},
+    {"Capacity", "Max*"},   {"Params", "Param#"},
 };
 
 // sim::build_device: the Identity object, the File object's revision, the
 // connection points with their assemblies, the Parameter object (with the
 // enumerations it serves) and its class attributes.
 constexpr need simulator_needs[] = {
-    {"Device", "VendCode"}, {"Device", "ProdType"}, {"Device", "ProdCode"},
-    {"Device", "MajRev"},   {"Device", "MinRev"},   {"Device", "ProdName"},
-    {"File", "Revision"},
-    {"Connection Manager#", ""},
-    {"Assembly", "Assem#"},
-    {"ParamClass", ""},
-    {"Params", ""},
-    {"EnumPar", ""},
+    {"Device", "VendCode"}, {"Device", "ProdType"}, {"Device", "ProdCode"}, {"Device", "MajRev"},
+    {"Device", "MinRev"},   {"Device", "ProdName"}, {"File", "Revision"},   {"Connection Manager#", ""},
+    {"Assembly", "Assem#"}, {"ParamClass", ""},     {"Params", ""},         {"EnumPar", ""},
 };
 
 std::span<const need> needs_of(emitter who) {

@@ -18,8 +18,8 @@ struct header_options {
 };
 
 struct header_result {
-  std::string text;                  // the header, when no error
-  std::vector<header_issue> issues;  // EDS problems
+  std::string text;                    // the header, when no error
+  std::vector<header_issue> issues;    // EDS problems
   std::optional<std::string> failure;  // template or option problem (exit 2)
   [[nodiscard]] bool has_error() const;
 };

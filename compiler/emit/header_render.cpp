@@ -6,8 +6,8 @@
 
 #include "edsc_version.hpp"
 #include "emit/header.hpp"
-#include "facts/header_parts.hpp"
 #include "emit/templates.hpp"
+#include "facts/header_parts.hpp"
 
 namespace edsc::emit {
 
@@ -44,8 +44,10 @@ mst::data identity_view(const identity_facts& id, const header_options& opt) {
   v.set("product_name_length", dec(id.product_name.size()));
   if (id.catalog) v.set("catalog", c_string_literal(*id.catalog));
   if (id.vendor_name) v.set("vendor_name", c_string_literal(*id.vendor_name));
-  if (opt.serial) v.set("serial", hex(*opt.serial, 8));
-  else v.set("no_serial", true);
+  if (opt.serial)
+    v.set("serial", hex(*opt.serial, 8));
+  else
+    v.set("no_serial", true);
   v.set("vendor_id_bytes", byte_list(id.vendor_id, 2));
   v.set("device_type_bytes", byte_list(id.device_type, 2));
   v.set("product_code_bytes", byte_list(id.product_code, 2));

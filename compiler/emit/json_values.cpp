@@ -1,18 +1,17 @@
 #include <fmt/format.h>
 
+#include "base/utf8.hpp"
 #include "cst/cst.hpp"
 #include "emit/json_values.hpp"
-#include "base/utf8.hpp"
 
 namespace edsc::emit::detail {
 
 namespace {
 
 // Windows-1252 code points for bytes 0x80-0x9F (0 where the code page has a hole).
-constexpr char16_t cp1252[32] = {
-    0x20AC, 0, 0x201A, 0x0192, 0x201E, 0x2026, 0x2020, 0x2021, 0x02C6, 0x2030, 0x0160, 0x2039,
-    0x0152, 0, 0x017D, 0, 0, 0x2018, 0x2019, 0x201C, 0x201D, 0x2022, 0x2013, 0x2014,
-    0x02DC, 0x2122, 0x0161, 0x203A, 0x0153, 0, 0x017E, 0x0178};
+constexpr char16_t cp1252[32] = {0x20AC, 0,      0x201A, 0x0192, 0x201E, 0x2026, 0x2020, 0x2021, 0x02C6, 0x2030, 0x0160,
+                                 0x2039, 0x0152, 0,      0x017D, 0,      0,      0x2018, 0x2019, 0x201C, 0x201D, 0x2022,
+                                 0x2013, 0x2014, 0x02DC, 0x2122, 0x0161, 0x203A, 0x0153, 0,      0x017E, 0x0178};
 
 void put(std::string& out, char32_t cp) {
   if (cp < 0x80) {
@@ -51,8 +50,10 @@ std::string to_utf8(std::string_view s) {
   out.reserve(s.size() + 8);
   for (char ch : s) {
     const auto c = static_cast<unsigned char>(ch);
-    if (c >= 0x80 && c < 0xA0) put(out, cp1252[c - 0x80] ? cp1252[c - 0x80] : c);
-    else put(out, c);
+    if (c >= 0x80 && c < 0xA0)
+      put(out, cp1252[c - 0x80] ? cp1252[c - 0x80] : c);
+    else
+      put(out, c);
   }
   return out;
 }
@@ -147,7 +148,8 @@ json writer::value(const model::value& v) const {
       return json(v.magnitude);
     case value_kind::real: return json(v.as_real());
     case value_kind::string:
-      if (const auto raw = src.text(v.from.where); raw.find('\\') != std::string_view::npos) {  // keep the escaped spelling too
+      if (const auto raw = src.text(v.from.where);
+          raw.find('\\') != std::string_view::npos) {  // keep the escaped spelling too
         j["text"] = to_utf8(v.text);
         j["raw"] = to_utf8(raw);
         return j;
@@ -170,9 +172,7 @@ json writer::value(const model::value& v) const {
       if (v.ref.has_bit()) j["bit"] = static_cast<std::uint32_t>(v.ref.bit);
       j["resolved"] = v.ref.resolved();
       return j;
-    case value_kind::dataset:
-      j["dataset"] = to_utf8(v.text);
-      return j;
+    case value_kind::dataset: j["dataset"] = to_utf8(v.text); return j;
     case value_kind::none: break;
   }
   return nullptr;

@@ -35,9 +35,10 @@ std::string path_problem(const model::device& dev, const model::connection& c, c
     // (0x2C); a second instance segment it refuses (0x0315, measured).
     if (s.kind == model::segment_kind::instance) {
       if (instance_seen)
-        return fmt::format("its path names instance {} with a 0x24 segment where OpENer expects a connection point "
-                           "(0x2C); OpENer refuses it with 0x0315",
-                           s.value);
+        return fmt::format(
+            "its path names instance {} with a 0x24 segment where OpENer expects a connection point "
+            "(0x2C); OpENer refuses it with 0x0315",
+            s.value);
       instance_seen = true;
     }
     switch (s.kind) {
@@ -45,26 +46,23 @@ std::string path_problem(const model::device& dev, const model::connection& c, c
         if (s.value_known() && s.value != 0x04)
           return fmt::format("its path names class 0x{:02X}; OpENer connects to assemblies (class 0x04) only", s.value);
         break;
-      case model::segment_kind::port:
-        return "its path routes through a port; OpENer serves its own assemblies only";
+      case model::segment_kind::port: return "its path routes through a port; OpENer serves its own assemblies only";
       case model::segment_kind::instance:
       case model::segment_kind::connection_point:
         if (!s.placeholder.empty()) return "its path holds a placeholder the tool fills in, not an instance";
         if (s.value_known() && s.value > 0xFFFF)
           return fmt::format("its path names instance {}; OpENer numbers assembly instances in 16 bits", s.value);
         break;
-      case model::segment_kind::placeholder:
-        return "its path holds a placeholder the tool fills in, not an instance";
+      case model::segment_kind::placeholder: return "its path holds a placeholder the tool fills in, not an instance";
       case model::segment_kind::symbol:
-      case model::segment_kind::unknown:
-        return "its path holds a segment OpENer does not match connection points by";
-      default:
-        break;
+      case model::segment_kind::unknown: return "its path holds a segment OpENer does not match connection points by";
+      default: break;
     }
   }
   if (f.output_size > 0 && f.output_instance == 0) return "its O->T data has no assembly instance in the path";
   if (f.input_size > 0 && f.input_instance == 0) return "its T->O data has no assembly instance in the path";
-  if (f.input_instance == 0) return "its path names no input (T->O) instance, which every OpENer connection point needs";
+  if (f.input_instance == 0)
+    return "its path names no input (T->O) instance, which every OpENer connection point needs";
   return {};
 }
 
@@ -79,11 +77,13 @@ class planner {
     const auto kind = model::classify(tt, f.config_size > 0 && f.config_instance != 0);
     if (!c->decoded || !kind.unambiguous()) {
       report(diag_id::opener_connection_kind, where_of(*c, c->trigger),
-             fmt::format("Connection{}: {}", f.number,
-                         !c->decoded ? "its trigger/transport is not a number OpENer's kinds can be read from"
-                         : kind.named == 0 ? (tt.redundant_owner ? "redundant owner has no OpENer connection point"
-                                                            : "it names no transport type (exclusive owner, input only, listen only)")
-                                      : "it names more than one transport type; OpENer configures one kind per point"));
+             fmt::format(
+                 "Connection{}: {}", f.number,
+                 !c->decoded ? "its trigger/transport is not a number OpENer's kinds can be read from"
+                 : kind.named == 0
+                     ? (tt.redundant_owner ? "redundant owner has no OpENer connection point"
+                                           : "it names no transport type (exclusive owner, input only, listen only)")
+                     : "it names more than one transport type; OpENer configures one kind per point"));
       return;
     }
     if (const auto why = path_problem(dev_, *c, f); !why.empty()) {
@@ -99,7 +99,7 @@ class planner {
     p.kind = kind.type;
     auto& count = p.kind == model::app_type::exclusive_owner ? plan.exclusive_owner
                   : p.kind == model::app_type::input_only    ? plan.input_only
-                                                               : plan.listen_only;
+                                                             : plan.listen_only;
     p.index = count++;
     p.connection = f.number;
     p.name = f.name;
@@ -152,8 +152,8 @@ class planner {
     }
     if (size > opener_max_assembly_bytes) {
       report(diag_id::opener_assembly_size, where_of(c, size_field),
-             fmt::format("Connection{}: the {} assembly {} has {} bytes; an OpENer message holds at most {}",
-                         c.number, role, instance, size, opener_max_assembly_bytes));
+             fmt::format("Connection{}: the {} assembly {} has {} bytes; an OpENer message holds at most {}", c.number,
+                         role, instance, size, opener_max_assembly_bytes));
       return false;
     }
     for (auto& a : plan.assemblies)
@@ -204,7 +204,10 @@ opener_plan plan_opener(const model::device& dev, const source_file& src, diagno
   p.plan.source_sha256 = facts.source_sha256;
   bool any_connection = false;
   for (const auto& c : dev.connections) any_connection = any_connection || c.kind == model::connection_kind::connection;
-  if (!any_connection) diags.push_back(make_diagnostic(diag_id::opener_no_connection, span{}, "no ConnectionN in [Connection Manager]: OpENer would have no I/O connection to serve"));
+  if (!any_connection)
+    diags.push_back(
+        make_diagnostic(diag_id::opener_no_connection, span{},
+                        "no ConnectionN in [Connection Manager]: OpENer would have no I/O connection to serve"));
   return std::move(p.plan);
 }
 

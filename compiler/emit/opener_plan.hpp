@@ -29,7 +29,7 @@ struct opener_assembly {
 
 struct opener_point {
   model::app_type kind = model::app_type::exclusive_owner;
-  unsigned index = 0;  // OpENer's connection_number: counted per kind from 0
+  unsigned index = 0;            // OpENer's connection_number: counted per kind from 0
   std::uint32_t connection = 0;  // the ConnectionN it serves
   std::string name;
   std::uint32_t output_instance = 0, input_instance = 0, config_instance = 0;
@@ -41,7 +41,7 @@ struct opener_plan {
   std::vector<opener_assembly> assemblies;  // by instance, each once
   std::vector<opener_point> points;
   unsigned exclusive_owner = 0, input_only = 0, listen_only = 0;
-  bool consumed_run_idle = true, produced_run_idle = false;  // OpENer's defaults
+  bool consumed_run_idle = true, produced_run_idle = false;           // OpENer's defaults
   std::uint32_t ethernet_buffer_bytes = opener_default_buffer_bytes;  // OPENER_ETHERNET_BUFFER_SIZE
 };
 

@@ -80,10 +80,8 @@ const model::assembly* assembly_of(const model::device& dev, const value& format
     case ref_kind::proxy_assem:
     case ref_kind::proxied_assem:
     case ref_kind::proxy_assem_exa:
-    case ref_kind::proxied_assem_exa:
-      return r->target < dev.assemblies.size() ? &dev.assemblies[r->target] : nullptr;
-    default:
-      return nullptr;
+    case ref_kind::proxied_assem_exa: return r->target < dev.assemblies.size() ? &dev.assemblies[r->target] : nullptr;
+    default: return nullptr;
   }
 }
 
@@ -125,7 +123,8 @@ std::vector<eip_connection_facts> collect_connections(const model::device& dev, 
       f.input_run_idle = f.input_format == 4;
     } else {
       issues.push_back({false, fmt::format("[Connection Manager] Connection{}: trigger/transport or parameters are "
-                                           "not numbers; its run/idle macros say 0", c.number)});
+                                           "not numbers; its run/idle macros say 0",
+                                           c.number)});
     }
     instances_from_path(dev, c, f);
     // Instances the path does not give come from the assemblies the formats name.

@@ -18,14 +18,12 @@ std::uint64_t wire_bits(const value& v, const schema::cip_type_info* t, std::uin
     case type_class::signed_int:
       return v.kind == model::value_kind::integer ? static_cast<std::uint64_t>(v.as_int()) & mask : 0;
     case type_class::unsigned_int:
-    case type_class::bit_string:
-      return v.kind == model::value_kind::integer ? v.as_uint() & mask : 0;
+    case type_class::bit_string: return v.kind == model::value_kind::integer ? v.as_uint() & mask : 0;
     case type_class::real:
       if (v.kind != model::value_kind::real && v.kind != model::value_kind::integer) return 0;
       if (t->code == schema::code::REAL) return std::bit_cast<std::uint32_t>(static_cast<float>(v.as_real()));
       return std::bit_cast<std::uint64_t>(v.as_real());
-    default:
-      return 0;  // strings, EPATH, STRINGI: see default_text
+    default: return 0;  // strings, EPATH, STRINGI: see default_text
   }
 }
 

@@ -90,8 +90,9 @@ devicenet_facts collect_devicenet(const model::io_info& io, std::vector<header_i
         if (r->resolved()) {
           names_data = true;
         } else {
-          issues.push_back({false, fmt::format("[IO_Info] {}Info names {}{}, which does not exist; its size is taken as 0",
-                                               f.name, v == &info->default_input ? "Input" : "Output", r->number)});
+          issues.push_back(
+              {false, fmt::format("[IO_Info] {}Info names {}{}, which does not exist; its size is taken as 0", f.name,
+                                  v == &info->default_input ? "Input" : "Output", r->number)});
         }
       }
       f.produced_size = data_size(io, info->default_input, false);

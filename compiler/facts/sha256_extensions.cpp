@@ -20,8 +20,7 @@ bool sha256_extensions() {
   return ssse3 && sse41 && sha;
 }
 
-__attribute__((target("sha,sse4.1,ssse3"))) void sha256_blocks_extensions(std::uint32_t (&h)[8],
-                                                                          const std::uint8_t* p,
+__attribute__((target("sha,sse4.1,ssse3"))) void sha256_blocks_extensions(std::uint32_t (&h)[8], const std::uint8_t* p,
                                                                           std::size_t blocks) {
   // The instructions keep the eight words as ABEF and CDGH.
   const __m128i cdab = _mm_shuffle_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(&h[0])), 0xB1);
@@ -47,7 +46,8 @@ __attribute__((target("sha,sse4.1,ssse3"))) void sha256_blocks_extensions(std::u
         words = _mm_add_epi32(words, _mm_alignr_epi8(previous, before_previous, 4));
         words = _mm_sha256msg2_epu32(words, previous);
       }
-      __m128i wk = _mm_add_epi32(words, _mm_loadu_si128(reinterpret_cast<const __m128i*>(&sha256_round_constants[4 * g])));
+      __m128i wk =
+          _mm_add_epi32(words, _mm_loadu_si128(reinterpret_cast<const __m128i*>(&sha256_round_constants[4 * g])));
       cdgh = _mm_sha256rnds2_epu32(cdgh, abef, wk);  // two rounds: the new ABEF
       wk = _mm_shuffle_epi32(wk, 0x0E);
       abef = _mm_sha256rnds2_epu32(abef, cdgh, wk);  // two more, roles swapped back

@@ -50,8 +50,7 @@ std::optional<io_error> write_atomically(const std::string& path, std::string_vi
   name.push_back('\0');
   const int fd = ::mkstemp(name.data());
   if (fd < 0) {
-    return io_error{fmt::format("{}: cannot create a temporary file in '{}': {}", path, dir,
-                                std::strerror(errno))};
+    return io_error{fmt::format("{}: cannot create a temporary file in '{}': {}", path, dir, std::strerror(errno))};
   }
   auto fail = [&](const char* what) {
     const int saved = errno;
@@ -184,8 +183,8 @@ std::optional<io_error> write_output(const std::string& path, std::string_view b
   struct stat st = lst;
   if (S_ISLNK(lst.st_mode)) {
     if (::stat(path.c_str(), &st) != 0)
-      return io_error{fmt::format("{}: a symbolic link to nothing ({}); refusing to replace the link", path,
-                                  std::strerror(errno))};
+      return io_error{
+          fmt::format("{}: a symbolic link to nothing ({}); refusing to replace the link", path, std::strerror(errno))};
     if (S_ISREG(st.st_mode)) {
       // Replaced beside the file the link names, so the link stays and
       // leads to the new content.
@@ -205,7 +204,8 @@ std::optional<io_error> write_output(const std::string& path, std::string_view b
 }
 
 bool same_file(const std::string& a, const std::string& b) {
-  struct stat sa {}, sb {};
+  struct stat sa {
+  }, sb{};
   if (::stat(a.c_str(), &sa) != 0 || ::stat(b.c_str(), &sb) != 0) return false;
   return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }

@@ -28,8 +28,8 @@ io_error errno_error(const std::string& path, const char* what) {
 }
 
 io_error over_limit(const std::string& path, std::uint64_t size, std::uint64_t max_bytes, const char* at_least) {
-  return io_error{fmt::format("{}: file is {}{} bytes, over the input limit of {} bytes", path, at_least, size,
-                              max_bytes)};
+  return io_error{
+      fmt::format("{}: file is {}{} bytes, over the input limit of {} bytes", path, at_least, size, max_bytes)};
 }
 
 // Reads into buf[0, len) until it is full or the file ends: the bytes read,

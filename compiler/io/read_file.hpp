@@ -19,8 +19,7 @@ struct io_error {
 
 using read_result = std::variant<std::unique_ptr<source_file>, io_error>;
 
-[[nodiscard]] read_result read_source(const std::string& path,
-                                      std::uint64_t max_bytes = default_max_input_bytes);
+[[nodiscard]] read_result read_source(const std::string& path, std::uint64_t max_bytes = default_max_input_bytes);
 
 // `-` on a command line names standard input, as for most Unix tools.
 [[nodiscard]] inline bool is_stdin(std::string_view path) { return path == "-"; }

@@ -61,9 +61,12 @@ result<event> client::run() {
     if (!due) return error{net::error_id::closed, "the session is closed"};
     std::uint8_t buf[4096];
     const auto got = net::recv_some(sock_.get(), buf, sizeof buf, *due);
-    if (!got) machine_.handle_timeout(clock::now());
-    else if (got->size > 0) machine_.handle_bytes(cip::byte_view(buf, got->size), clock::now());
-    else machine_.handle_closed(got->broken);
+    if (!got)
+      machine_.handle_timeout(clock::now());
+    else if (got->size > 0)
+      machine_.handle_bytes(cip::byte_view(buf, got->size), clock::now());
+    else
+      machine_.handle_closed(got->broken);
   }
 }
 

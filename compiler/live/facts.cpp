@@ -4,8 +4,8 @@
 
 #include <fmt/format.h>
 
-#include "live/client.hpp"
 #include "connections/plan.hpp"
+#include "live/client.hpp"
 #include "net/interrupt.hpp"
 
 namespace edsc::live {

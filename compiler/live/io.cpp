@@ -21,8 +21,8 @@ namespace {
 constexpr std::uint16_t originator_vendor = 0xFFFF;
 constexpr std::uint32_t originator_serial = 0x63736465;
 
-void measure(int sock, const connection_plan& plan, const cip::forward_open_reply& granted,
-             const sockaddr_in& device, std::chrono::milliseconds window, io_stats& st) {
+void measure(int sock, const connection_plan& plan, const cip::forward_open_reply& granted, const sockaddr_in& device,
+             std::chrono::milliseconds window, io_stats& st) {
   const auto start = clock::now();
   const auto end = start + window;
   const auto ot_period = std::chrono::microseconds(std::max<std::uint32_t>(granted.ot_api_us, 1000));
@@ -43,7 +43,8 @@ void measure(int sock, const connection_plan& plan, const cip::forward_open_repl
       if (plan.ot_run_idle && plan.facts.output_size > 0) f.run_idle = 0;  // idle: outputs stay safe
       f.data.assign(plan.facts.output_size, 0);
       const auto b = cip::encode_io_frame(f);
-      if (b && ::sendto(sock, b->data(), b->size(), 0, reinterpret_cast<const sockaddr*>(&to), sizeof to) > 0) ++st.sent;
+      if (b && ::sendto(sock, b->data(), b->size(), 0, reinterpret_cast<const sockaddr*>(&to), sizeof to) > 0)
+        ++st.sent;
       next_send += ot_period;
     }
     const auto wake = send_ot ? std::min(next_send, end) : end;

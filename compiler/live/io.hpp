@@ -19,19 +19,19 @@ using connections::plan_assemblies;
 using connections::plan_connections;
 
 struct io_stats {
-  unsigned frames = 0;          // T->O frames of this connection
-  unsigned wrong_size = 0;      // frames whose data size is not the EDS's
-  std::size_t a_wrong_size = 0; // one such size
-  unsigned without_header = 0;  // frames lacking the run/idle header the format asks for
+  unsigned frames = 0;           // T->O frames of this connection
+  unsigned wrong_size = 0;       // frames whose data size is not the EDS's
+  std::size_t a_wrong_size = 0;  // one such size
+  unsigned without_header = 0;   // frames lacking the run/idle header the format asks for
   unsigned undecodable = 0;
-  unsigned sent = 0;            // O->T frames sent
-  double mean_interval_us = 0;  // between T->O frames
+  unsigned sent = 0;                     // O->T frames sent
+  double mean_interval_us = 0;           // between T->O frames
   std::chrono::milliseconds watched{0};  // how long edsc watched (shorter when interrupted)
 };
 
 struct connection_outcome {
   bool opened = false;
-  std::uint8_t general = 0;               // refusal status
+  std::uint8_t general = 0;  // refusal status
   std::vector<std::uint16_t> additional;
   cip::forward_open_reply granted;
   io_stats io;

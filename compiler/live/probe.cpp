@@ -56,9 +56,10 @@ result<probe_result> probe(const net::endpoint& device, const probe_options& opt
     if (n > max_scanned_instances)
       out.assemblies_note = fmt::format("only instances 1-{} of {} read", max_scanned_instances, n);
   } else {
-    out.assemblies_note = fmt::format("the Assembly class's Max Instance is not readable ({}); only instances "
-                                      "named by the library's EDS files were tried",
-                                      rep.general ? cip::describe_status(rep.general, rep.additional) : "no data");
+    out.assemblies_note = fmt::format(
+        "the Assembly class's Max Instance is not readable ({}); only instances "
+        "named by the library's EDS files were tried",
+        rep.general ? cip::describe_status(rep.general, rep.additional) : "no data");
   }
   std::sort(instances.begin(), instances.end());
   instances.erase(std::unique(instances.begin(), instances.end()), instances.end());

@@ -18,15 +18,15 @@ struct assembly_size {
 
 struct probe_result {
   cip::identity identity;
-  std::string identity_source;           // "Identity object", "ListIdentity (UDP)"
+  std::string identity_source;              // "Identity object", "ListIdentity (UDP)"
   std::vector<cip::service_info> services;  // ListServices
   std::vector<assembly_size> assemblies;
-  std::string assemblies_note;           // why the list may be incomplete
+  std::string assemblies_note;  // why the list may be incomplete
 };
 
 struct probe_options {
   std::chrono::milliseconds timeout{3000};
-  bool udp = false;        // ListIdentity by UDP instead of TCP
+  bool udp = false;                            // ListIdentity by UDP instead of TCP
   std::vector<std::uint32_t> extra_instances;  // assembly instances to read besides the scan
 };
 

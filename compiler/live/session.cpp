@@ -45,14 +45,13 @@ result<checked_reply> check_reply(cip::byte_view message, const expectation& x) 
     return fail(error{net::error_id::unexpected,
                       fmt::format("the device answered {} with {}", asked, command_name(h->command))});
   if (h->context != x.context)
-    return fail(error{net::error_id::unexpected,
-                      fmt::format("the device's {} reply does not echo our sender context: a reply to another request",
-                                  asked)});
+    return fail(error{
+        net::error_id::unexpected,
+        fmt::format("the device's {} reply does not echo our sender context: a reply to another request", asked)});
   if (h->status != 0) {
     const auto text = cip::words_of(cip::encap_status{h->status});
-    return fail(error{net::error_id::refused,
-                      fmt::format("the device refused {} with encapsulation status 0x{:04X} {}", asked, h->status,
-                                  text.empty() ? "(unknown code)" : text)});
+    return fail(error{net::error_id::refused, fmt::format("the device refused {} with encapsulation status 0x{:04X} {}",
+                                                          asked, h->status, text.empty() ? "(unknown code)" : text)});
   }
   if (x.session && h->session != *x.session)
     return fail(error{net::error_id::unexpected,
@@ -223,12 +222,11 @@ std::string session::partial_words(bool timed_out, std::string_view reason) cons
   const auto what = in_header ? cmd + " reply header" : cmd + " reply";
   const auto done = in_header ? framer_.pending() : framer_.pending() - cip::encap_header_size;
   const auto n = in_header ? cip::encap_header_size : framer_.wanted() - cip::encap_header_size;
-  if (!reason.empty())
-    return fmt::format("receiving {} failed after {} of the {} bytes: {}", what, done, n, reason);
+  if (!reason.empty()) return fmt::format("receiving {} failed after {} of the {} bytes: {}", what, done, n, reason);
   if (timed_out)
     return done == 0 ? fmt::format("no {} from the device within the timeout", what)
-                     : fmt::format("the device sent {} of the {} bytes of {} and then nothing within the timeout",
-                                   done, n, what);
+                     : fmt::format("the device sent {} of the {} bytes of {} and then nothing within the timeout", done,
+                                   n, what);
   return done == 0 ? fmt::format("the device closed the connection instead of sending {}", what)
                    : fmt::format("the device closed the connection after {} of the {} bytes of {}", done, n, what);
 }

@@ -31,7 +31,8 @@ result<cip::bytes> upload_file(client& s, std::uint32_t instance) {
   const auto& ir = *init;
   if (ir.general != 0) return refused("Initiate_Upload of the File object", ir);
   const auto offer = cip::decode_upload_offer(ir.data, 0);
-  if (!offer || offer->transfer_size == 0) return error{net::error_id::unexpected, "Initiate_Upload answered without a file size and transfer size"};
+  if (!offer || offer->transfer_size == 0)
+    return error{net::error_id::unexpected, "Initiate_Upload answered without a file size and transfer size"};
   const auto size = offer->file_size;
   cip::bytes file;
   // A packet carries at least one byte, so the file's size bounds the packets.
@@ -41,18 +42,22 @@ result<cip::bytes> upload_file(client& s, std::uint32_t instance) {
     if (!t) return t.error();
     const auto& r = *t;
     if (r.general != 0) return refused(fmt::format("Upload_Transfer {}", n).c_str(), r);
-    if (r.data.size() < 2 || r.data[0] != number) return error{net::error_id::unexpected, fmt::format("Upload_Transfer {} answered another transfer", n)};
+    if (r.data.size() < 2 || r.data[0] != number)
+      return error{net::error_id::unexpected, fmt::format("Upload_Transfer {} answered another transfer", n)};
     if (!in_turn(packet_type{r.data[1]}, n))
-      return error{net::error_id::unexpected, fmt::format("Upload_Transfer {}: packet type {} out of turn", n, r.data[1])};
+      return error{net::error_id::unexpected,
+                   fmt::format("Upload_Transfer {}: packet type {} out of turn", n, r.data[1])};
     const auto p = cip::decode_upload_packet(r.data, 0);
     if (!p) return malformed(fmt::format("Upload_Transfer {} reply", n), p.error());
     file.insert(file.end(), p->data.begin(), p->data.end());
     if (!p->checksum) continue;
     if (const auto expected = cip::file_checksum(file); *p->checksum != expected)
-      return error{net::error_id::unexpected, fmt::format("the file's checksum 0x{:04X} does not match its bytes (0x{:04X} expected)",
-                                   *p->checksum, expected)};
+      return error{net::error_id::unexpected,
+                   fmt::format("the file's checksum 0x{:04X} does not match its bytes (0x{:04X} expected)",
+                               *p->checksum, expected)};
     if (file.size() != size)
-      return error{net::error_id::unexpected, fmt::format("the device announced {} bytes and sent {}", size, file.size())};
+      return error{net::error_id::unexpected,
+                   fmt::format("the device announced {} bytes and sent {}", size, file.size())};
     return file;
   }
   return error{net::error_id::unexpected, fmt::format("no last packet after {} bytes announced", size)};

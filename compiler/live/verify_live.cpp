@@ -4,12 +4,12 @@
 
 #include <fmt/format.h>
 
+#include "base/plural.hpp"
 #include "cip/encap.hpp"
 #include "cip/status.hpp"
-#include "base/plural.hpp"
+#include "connections/plan.hpp"
 #include "live/facts.hpp"
 #include "live/io.hpp"
-#include "connections/plan.hpp"
 
 namespace edsc::live {
 
@@ -57,8 +57,8 @@ struct checker {
     row(keyword, std::to_string(v.as_uint()), std::to_string(device_value), same ? verdict::match : verdict::mismatch);
     if (!same)
       diag(diag_id::live_identity, where,
-           fmt::format("the device reports {} {}, the EDS says {}: a scanner keyed from this file refuses it",
-                       keyword, device_value, v.as_uint()));
+           fmt::format("the device reports {} {}, the EDS says {}: a scanner keyed from this file refuses it", keyword,
+                       device_value, v.as_uint()));
   }
 
   void identity(const cip::identity& id) {
@@ -222,17 +222,19 @@ struct checker {
     for (std::size_t i = 0; i < plans.size(); ++i) {
       const auto& p = plans[i];
       const auto name = fmt::format("Connection{}", p.facts.number);
-      const auto sizes = fmt::format("O->T {} T->O {} cfg {}", p.facts.output_size, p.facts.input_size, p.facts.config_size);
+      const auto sizes =
+          fmt::format("O->T {} T->O {} cfg {}", p.facts.output_size, p.facts.input_size, p.facts.config_size);
       if (unreached(name, sizes, i < f.connections.size())) continue;
       if (!p.not_openable.empty() || !f.connections[i]) {
         row(name, sizes, "not opened", verdict::not_tried);
-        diag(diag_id::live_not_checked, p.conn->from.where,
-             fmt::format("{} not opened: {}", name, p.not_openable));
+        diag(diag_id::live_not_checked, p.conn->from.where, fmt::format("{} not opened: {}", name, p.not_openable));
         continue;
       }
       const auto& o = *f.connections[i];
-      if (o.opened) frames(p, o, name, sizes);
-      else refused(p, o, name, sizes);
+      if (o.opened)
+        frames(p, o, name, sizes);
+      else
+        refused(p, o, name, sizes);
     }
   }
 
@@ -243,17 +245,20 @@ struct checker {
     if (const auto* why = busy_reason(o.general, ext)) {
       row(name, sizes, fmt::format("busy 0x{:02X}/0x{:04X}", o.general, ext), verdict::not_tried);
       out.rows.back().refused = std::pair<int, int>{o.general, ext};
-      out.busy.push_back(fmt::format("{} not checked: the device refused it with {}: {}; that says nothing "
-                                     "of the EDS",
-                                     name, cip::describe_status(o.general, o.additional), why));
+      out.busy.push_back(
+          fmt::format("{} not checked: the device refused it with {}: {}; that says nothing "
+                      "of the EDS",
+                      name, cip::describe_status(o.general, o.additional), why));
       return;
     }
     row(name, sizes, fmt::format("refused 0x{:02X}/0x{:04X}", o.general, ext), verdict::mismatch);
     out.rows.back().refused = std::pair<int, int>{o.general, ext};
-    diag(diag_id::live_connection_refused, refusal_site(p, ext), fmt::format("{} refused: {}", name, refusal_words(p, o)));
+    diag(diag_id::live_connection_refused, refusal_site(p, ext),
+         fmt::format("{} refused: {}", name, refusal_words(p, o)));
   }
 
-  void frames(const connection_plan& p, const connection_outcome& o, const std::string& name, const std::string& sizes) {
+  void frames(const connection_plan& p, const connection_outcome& o, const std::string& name,
+              const std::string& sizes) {
     const auto& st = o.io;
     const auto& c = *p.conn;
     const auto to_site = at(c.to_size, model::origin{0, at(c.to_format, c.from)});
@@ -274,8 +279,8 @@ struct checker {
     if (whole_watch && expects_frames && st.frames == 0) {
       ok = false;
       diag(diag_id::live_io_frames, to_site,
-           fmt::format("{} opened, but no T->O frame came within {} ms (RPI {} us granted)", name,
-                       st.watched.count(), o.granted.to_api_us));
+           fmt::format("{} opened, but no T->O frame came within {} ms (RPI {} us granted)", name, st.watched.count(),
+                       o.granted.to_api_us));
     }
     if (st.wrong_size > 0) {
       ok = false;
@@ -292,8 +297,9 @@ struct checker {
     if (whole_watch)
       if (auto slow = io_rate_warning(name, st, o.granted.to_api_us)) diag(diag_id::live_io_rate, to_site, *slow);
     const auto bytes = st.wrong_size ? st.a_wrong_size : p.facts.input_size;
-    auto seen = fmt::format("open; {} frames of {} B{}, every {:.1f} ms (API {:.1f} ms)", st.frames, bytes,
-                            p.to_run_idle ? " +run/idle" : "", st.mean_interval_us / 1000, o.granted.to_api_us / 1000.0);
+    auto seen =
+        fmt::format("open; {} frames of {} B{}, every {:.1f} ms (API {:.1f} ms)", st.frames, bytes,
+                    p.to_run_idle ? " +run/idle" : "", st.mean_interval_us / 1000, o.granted.to_api_us / 1000.0);
     if (!whole_watch)
       seen += fmt::format("; {} after {:.1f} s", o.interrupted ? "interrupted" : "device lost",
                           st.watched.count() / 1000.0);
@@ -359,7 +365,8 @@ live_report judge_facts(const model::device& dev, const live_facts& facts, bool 
   if (connections) {
     ck.connections();
   } else {
-    for (const auto& c : dev.connections) ck.row(fmt::format("Connection{}", c.number), "", "--connections not given", verdict::not_tried);
+    for (const auto& c : dev.connections)
+      ck.row(fmt::format("Connection{}", c.number), "", "--connections not given", verdict::not_tried);
   }
   std::stable_sort(out.diags.begin(), out.diags.end(),
                    [](const diagnostic& a, const diagnostic& b) { return a.where.begin < b.where.begin; });

@@ -32,26 +32,26 @@ enum class verdict { match, mismatch, not_readable, not_tried };
 
 // What was measured on an open connection, for the machine-readable report.
 struct io_summary {
-  unsigned frames = 0;            // T->O frames received
-  std::size_t frame_bytes = 0;    // their data size (a wrong one when any was wrong)
-  bool run_idle = false;          // the T->O format carries the run/idle header
-  double interval_ms = 0;         // measured mean interval between frames
-  double granted_ms = 0;          // the T->O API the device granted
-  unsigned watched_ms = 0;        // how long edsc watched
-  unsigned sent = 0;              // O->T frames edsc sent
+  unsigned frames = 0;          // T->O frames received
+  std::size_t frame_bytes = 0;  // their data size (a wrong one when any was wrong)
+  bool run_idle = false;        // the T->O format carries the run/idle header
+  double interval_ms = 0;       // measured mean interval between frames
+  double granted_ms = 0;        // the T->O API the device granted
+  unsigned watched_ms = 0;      // how long edsc watched
+  unsigned sent = 0;            // O->T frames edsc sent
 };
 
 struct check_row {
   std::string check;  // "ProdCode", "Assem100 size", "Connection1"
   std::string eds, device;
   verdict result = verdict::not_tried;
-  std::optional<io_summary> io;                    // a connection that opened
-  std::optional<std::pair<int, int>> refused;      // general, extended status of a refusal
+  std::optional<io_summary> io;                // a connection that opened
+  std::optional<std::pair<int, int>> refused;  // general, extended status of a refusal
 };
 
 struct live_report {
   diagnostics diags;
-  std::vector<check_row> rows;  // also the checks made before a failure or an interruption
+  std::vector<check_row> rows;   // also the checks made before a failure or an interruption
   std::optional<error> failure;  // the device could not be talked to (any more): exit 2
   // Connections the device refused for a reason of its own, not of the EDS
   // (another scanner owns them, no connection free), in words: exit 2.

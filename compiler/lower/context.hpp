@@ -23,9 +23,7 @@ struct context {
   };
   std::vector<deferred_enum> deferred_enums;
 
-  [[nodiscard]] std::uint32_t field_count(std::uint32_t entry) const {
-    return tree.entries[entry].fields_count;
-  }
+  [[nodiscard]] std::uint32_t field_count(std::uint32_t entry) const { return tree.entries[entry].fields_count; }
   [[nodiscard]] model::origin origin_of(std::uint32_t entry, std::uint32_t field) const;
 
   // Field `index` of `entry` typed by `desc` (nullptr: typed by syntax only).
@@ -60,21 +58,23 @@ struct context {
     for (std::uint32_t i = from; i < to; ++i) {
       // The fixed fields inline; field_at for the repeating tail.
       const auto* d = i < k.fields.size() ? &k.fields[i] : schema::field_at(k, i);
-      if (d && d->type == schema::value_type::typed) typed_into(obj.*slots[i], entry, i, typed_as, untyped);
-      else field_into(obj.*slots[i], entry, i, d);
+      if (d && d->type == schema::value_type::typed)
+        typed_into(obj.*slots[i], entry, i, typed_as, untyped);
+      else
+        field_into(obj.*slots[i], entry, i, d);
     }
   }
   // Fields beyond the N slots go to `extra`.
   void fill_extra(std::uint32_t entry, const schema::keyword_desc& k, std::uint32_t from,
                   std::vector<model::value>& extra) {
-    for (std::uint32_t i = from; i < field_count(entry); ++i) field_into(extra.emplace_back(), entry, i, schema::field_at(k, i));
+    for (std::uint32_t i = from; i < field_count(entry); ++i)
+      field_into(extra.emplace_back(), entry, i, schema::field_at(k, i));
   }
   // Fills all the named slots of a freshly constructed `obj`; fields beyond
   // the slots go to `extra` (when given).
   template <class T, std::size_t N>
-  void fill(std::uint32_t entry, const schema::keyword_desc& k, T& obj,
-            const std::array<model::value T::*, N>& slots, std::vector<model::value>* extra,
-            const schema::cip_type_info* typed_as = nullptr, bool untyped = false) {
+  void fill(std::uint32_t entry, const schema::keyword_desc& k, T& obj, const std::array<model::value T::*, N>& slots,
+            std::vector<model::value>* extra, const schema::cip_type_info* typed_as = nullptr, bool untyped = false) {
     fill_slots(entry, k, obj, slots, 0, N, typed_as, untyped);
     if (extra) fill_extra(entry, k, N, *extra);
   }
@@ -95,8 +95,8 @@ struct context {
 
   // Keeps a whole entry in device::unknown.
   void keep_raw(std::uint32_t entry, model::raw_reason why, const schema::keyword_desc* k = nullptr) {
-    dev.unknown.push_back({entry, tree.entries[entry].section, tree.text(tree.entries[entry].keyword), why,
-                           all_fields(entry, k)});
+    dev.unknown.push_back(
+        {entry, tree.entries[entry].section, tree.text(tree.entries[entry].keyword), why, all_fields(entry, k)});
   }
 
   // All fields of the entry, typed by the keyword's descriptors.

@@ -119,36 +119,49 @@ void lower_bare(std::string_view s, const schema::field_desc& d, value& v) {
         v.ref.number = static_cast<std::uint32_t>(v.magnitude);
         // The kind is the first the mask allows; resolution may pick another.
         for (unsigned k = 0; k < 32; ++k)
-          if (d.refs & (1u << k)) { v.ref.kind = static_cast<schema::ref_kind>(k); break; }
+          if (d.refs & (1u << k)) {
+            v.ref.kind = static_cast<schema::ref_kind>(k);
+            break;
+          }
       }
       return;
     case value_type::real:
       v.kind = value_kind::real;
-      if (model::decode::real(s, v.real)) v.state = value_state::ok;
-      else mark_invalid(v, invalid_reason::not_a_number);
+      if (model::decode::real(s, v.real))
+        v.state = value_state::ok;
+      else
+        mark_invalid(v, invalid_reason::not_a_number);
       return;
     case value_type::date:
       v.kind = value_kind::date;
-      if (model::decode::date(s, v.d, lexed)) v.state = value_state::ok;
-      else mark_invalid(v, invalid_reason::bad_date);
+      if (model::decode::date(s, v.d, lexed))
+        v.state = value_state::ok;
+      else
+        mark_invalid(v, invalid_reason::bad_date);
       return;
     case value_type::time:
       v.kind = value_kind::time;
-      if (model::decode::time(s, v.t, lexed)) v.state = value_state::ok;
-      else mark_invalid(v, invalid_reason::bad_time);
+      if (model::decode::time(s, v.t, lexed))
+        v.state = value_state::ok;
+      else
+        mark_invalid(v, invalid_reason::bad_time);
       return;
     case value_type::revision:
       v.kind = value_kind::revision;
-      if (model::decode::revision(s, v.r, lexed)) v.state = value_state::ok;
-      else mark_invalid(v, invalid_reason::bad_revision);
+      if (model::decode::revision(s, v.r, lexed))
+        v.state = value_state::ok;
+      else
+        mark_invalid(v, invalid_reason::bad_revision);
       return;
     case value_type::keyword: {
       v.kind = value_kind::keyword;
       v.text = s;
       bool known = schema::is_vendor_specific(s);
       for (const auto w : d.words) known = known || schema::iequals(w, s);
-      if (known) v.state = value_state::ok;
-      else mark_invalid(v, invalid_reason::bad_keyword);
+      if (known)
+        v.state = value_state::ok;
+      else
+        mark_invalid(v, invalid_reason::bad_keyword);
       return;
     }
     case value_type::reference:
@@ -190,8 +203,7 @@ namespace {
 // meets empty fields, stays a small leaf without a register-saving prologue.
 [[gnu::noinline]] void lower_value(context& c, const cst::field& f, const schema::field_desc& d, value& v) {
   switch (f.kind) {
-    case cst::field_kind::empty:
-      break;
+    case cst::field_kind::empty: break;
     case cst::field_kind::string:
       if (d.type == value_type::epath || d.type == value_type::member) {
         lower_epath(c, f, v);
@@ -206,9 +218,7 @@ namespace {
       v.state = value_state::ok;
       if (d.type != value_type::stringi && d.type != value_type::any) mark_invalid(v, invalid_reason::wrong_kind);
       break;
-    case cst::field_kind::bare:
-      lower_bare(c.tree.text(f.where), d, v);
-      break;
+    case cst::field_kind::bare: lower_bare(c.tree.text(f.where), d, v); break;
   }
 }
 

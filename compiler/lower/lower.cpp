@@ -15,8 +15,8 @@ void lower_entry(lowering::context& c, const schema::section_desc& s, std::uint3
   const auto kw = c.tree.text(c.tree.entries[entry].keyword);
   const auto m = schema::find_keyword(s, kw);
   if (!m.desc) {
-    c.keep_raw(entry, schema::is_vendor_specific(kw) ? model::raw_reason::vendor_keyword
-                                                     : model::raw_reason::unknown_keyword);
+    c.keep_raw(entry,
+               schema::is_vendor_specific(kw) ? model::raw_reason::vendor_keyword : model::raw_reason::unknown_keyword);
     return;
   }
   switch (s.family) {
@@ -41,7 +41,9 @@ void lower_entry(lowering::context& c, const schema::section_desc& s, std::uint3
 }
 
 void set_section(model::device& dev, section_family f, std::uint32_t s) {
-  auto first = [s](std::uint32_t& slot) { if (slot == model::none) slot = s; };
+  auto first = [s](std::uint32_t& slot) {
+    if (slot == model::none) slot = s;
+  };
   switch (f) {
     case section_family::file: first(dev.file.section); break;
     case section_family::device: first(dev.identity.section); break;

@@ -34,11 +34,8 @@ void lower_connection(context& c, std::uint32_t entry, const schema::keyword_mat
     case entry_id::pitns:
     case entry_id::pitns_usec:
     case entry_id::safety_setting:
-    case entry_id::default_safety_connections:
-      c.dev.connection_settings.push_back(make_setting(c, entry, m));
-      return;
-    default:
-      return lower_object_setting(c, entry, m);
+    case entry_id::default_safety_connections: c.dev.connection_settings.push_back(make_setting(c, entry, m)); return;
+    default: return lower_object_setting(c, entry, m);
   }
 }
 

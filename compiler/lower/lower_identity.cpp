@@ -4,8 +4,8 @@
 
 namespace edsc::lowering {
 
-using schema::entry_id;
 using model::value;
+using schema::entry_id;
 
 namespace {
 

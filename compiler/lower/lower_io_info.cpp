@@ -44,9 +44,7 @@ void lower_io_info(context& c, model::io_info& io, std::uint32_t entry, const sc
       list.push_back(std::move(d));
       return;
     }
-    default:
-      c.keep_raw(entry, model::raw_reason::unknown_keyword, &k);
-      return;
+    default: c.keep_raw(entry, model::raw_reason::unknown_keyword, &k); return;
   }
 }
 

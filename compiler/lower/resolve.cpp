@@ -88,12 +88,18 @@ void detect_networks(model::device& dev) {
   for (const auto* v : words) {
     if (!v->ok()) continue;
     const auto w = v->text;
-    if (schema::iequals(w, "DeviceNet")) c.networks |= model::net_devicenet;
-    else if (schema::iequals(w, "ControlNet")) c.networks |= model::net_controlnet;
-    else if (schema::iequals(w, "CompoNet")) c.networks |= model::net_componet;
-    else if (schema::iequals(w, "ModbusSL") || schema::iequals(w, "ModbusTCP")) c.networks |= model::net_modbus;
-    else if (w.size() >= 10 && schema::iequals(w.substr(0, 10), "EtherNetIP")) c.networks |= model::net_ethernetip;
-    else if (schema::iequals(w, "Safety")) c.safety = true;
+    if (schema::iequals(w, "DeviceNet"))
+      c.networks |= model::net_devicenet;
+    else if (schema::iequals(w, "ControlNet"))
+      c.networks |= model::net_controlnet;
+    else if (schema::iequals(w, "CompoNet"))
+      c.networks |= model::net_componet;
+    else if (schema::iequals(w, "ModbusSL") || schema::iequals(w, "ModbusTCP"))
+      c.networks |= model::net_modbus;
+    else if (w.size() >= 10 && schema::iequals(w.substr(0, 10), "EtherNetIP"))
+      c.networks |= model::net_ethernetip;
+    else if (schema::iequals(w, "Safety"))
+      c.safety = true;
   }
   c.from_classification = c.networks != 0;
   if (c.from_classification) return;

@@ -20,8 +20,8 @@ bool wanted(const json& params, std::string_view kind) {
   for (const auto& o : (*ctx)["only"]) {
     if (!o.is_string()) continue;
     const auto& prefix = o.get_ref<const std::string&>();
-    if (kind == prefix || (kind.substr(0, prefix.size()) == prefix && kind.size() > prefix.size() &&
-                           kind[prefix.size()] == '.'))
+    if (kind == prefix ||
+        (kind.substr(0, prefix.size()) == prefix && kind.size() > prefix.size() && kind[prefix.size()] == '.'))
       return true;
   }
   return false;

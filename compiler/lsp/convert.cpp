@@ -56,7 +56,8 @@ json to_json(const document& d, const diagnostic& diag) {
          {"message", diag.message}};
   if (!diag.notes.empty()) {
     json related = json::array();
-    for (const auto& n : diag.notes) related.push_back(json{{"location", location(d, n.where)}, {"message", n.message}});
+    for (const auto& n : diag.notes)
+      related.push_back(json{{"location", location(d, n.where)}, {"message", n.message}});
     j["relatedInformation"] = std::move(related);
   }
   return j;

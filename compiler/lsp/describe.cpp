@@ -80,16 +80,21 @@ std::string bit_lines(std::uint64_t v, const std::string_view (&names)[N], std::
   std::string out;
   for (unsigned b = 0; b < N; ++b)
     if (has(v, b)) out += fmt::format("- {}\n", names[b]);
-  if (const auto o = other_bits(v, (std::uint64_t{1} << N) - 1); !o.empty()) out += fmt::format("- also {}{}\n", o, others_note);
+  if (const auto o = other_bits(v, (std::uint64_t{1} << N) - 1); !o.empty())
+    out += fmt::format("- also {}{}\n", o, others_note);
   return out.empty() ? std::string(none) : out;
 }
 
 }  // namespace
 
 std::string describe_param_descriptor(std::uint64_t v) {
-  static constexpr std::string_view names[] = {
-      "settable path (bit 0)", "enumerated strings (bit 1)", "scaling (bit 2)", "scaling links (bit 3)",
-      "read only (bit 4)", "monitor: read often (bit 5)", "extended precision scaling (bit 6)"};
+  static constexpr std::string_view names[] = {"settable path (bit 0)",
+                                               "enumerated strings (bit 1)",
+                                               "scaling (bit 2)",
+                                               "scaling links (bit 3)",
+                                               "read only (bit 4)",
+                                               "monitor: read often (bit 5)",
+                                               "extended precision scaling (bit 6)"};
   return bit_lines(v, names, " (not standard)", "- no bits set: settable, not enumerated, no scaling\n");
 }
 
@@ -175,8 +180,7 @@ std::string describe_epath(const model::epath& p, const model::device& dev) {
     }
   }
   if (!p.complete) out += "- **incomplete**: the bytes end inside a segment\n";
-  out += fmt::format("\n{}{}\n", plural(p.byte_count, "byte"),
-                     p.packed ? ", 16/32-bit values without pad bytes" : "");
+  out += fmt::format("\n{}{}\n", plural(p.byte_count, "byte"), p.packed ? ", 16/32-bit values without pad bytes" : "");
   return out;
 }
 

@@ -18,16 +18,14 @@ struct document {
   std::string uri;
   std::string path;  // shown in messages: the file path of a file:// URI
   std::int64_t version = 0;
-  std::unique_ptr<analysis> analysed;      // of text(); null after a change
-  std::unique_ptr<line_index> lines;       // of analysed->text()
-  bool diagnostics_due = true;             // to publish when the server is idle
+  std::unique_ptr<analysis> analysed;  // of text(); null after a change
+  std::unique_ptr<line_index> lines;   // of analysed->text()
+  bool diagnostics_due = true;         // to publish when the server is idle
 
   // The text as the editor has it. Analysing moves it into the analysis
   // rather than copying it (documents can be MBs, and a full-text change
   // re-analyses every time); an edit or a dropped analysis takes it back.
-  [[nodiscard]] std::string_view text() const {
-    return text_in_analysis_ ? analysed->text() : std::string_view(text_);
-  }
+  [[nodiscard]] std::string_view text() const { return text_in_analysis_ ? analysed->text() : std::string_view(text_); }
   [[nodiscard]] bool text_is_analysed() const { return text_in_analysis_; }
   void replace_text(std::string text) {
     text_ = std::move(text);

@@ -21,7 +21,7 @@ struct text_edit {
 
 // textDocument/hover: Markdown shown for the word under the cursor.
 struct hover_info {
-  span range;            // what the hover is about (keyword, field, reference)
+  span range;  // what the hover is about (keyword, field, reference)
   std::string markdown;
 };
 [[nodiscard]] std::optional<hover_info> hover(const analysis& a, std::uint32_t offset);

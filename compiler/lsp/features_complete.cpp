@@ -19,8 +19,7 @@ namespace edsc::lsp {
 namespace {
 
 // LSP CompletionItemKind numbers.
-constexpr int ck_module = 9, ck_keyword = 14, ck_reference = 18, ck_enum_member = 20,
-              ck_type_parameter = 25;
+constexpr int ck_module = 9, ck_keyword = 14, ck_reference = 18, ck_enum_member = 20, ck_type_parameter = 25;
 
 using schema::ref_kind;
 
@@ -115,12 +114,15 @@ void target_items(const analysis& a, schema::ref_mask allowed, bool as_number, b
     const auto k = static_cast<ref_kind>(static_cast<int>(ref_kind::variant) + static_cast<int>(x.kind));
     add(k, x.number, x.name.ok() ? fmt::format("\"{}\"", x.name.text) : "", {}, ck_reference);
   }
-  for (const auto& x : d.arrays) add(ref_kind::array, x.number, x.name.ok() ? fmt::format("\"{}\"", x.name.text) : "", {}, ck_reference);
+  for (const auto& x : d.arrays)
+    add(ref_kind::array, x.number, x.name.ok() ? fmt::format("\"{}\"", x.name.text) : "", {}, ck_reference);
   for (const auto& x : d.connections)
     add(ref_kind::connection, x.number, x.name.ok() ? fmt::format("\"{}\"", x.name.text) : "", {}, ck_reference);
   const auto& io = variant_io ? d.variant_io : d.io;
-  for (const auto& x : io.inputs) add(ref_kind::input, x.number, x.name.ok() ? fmt::format("\"{}\"", x.name.text) : "", {}, ck_reference);
-  for (const auto& x : io.outputs) add(ref_kind::output, x.number, x.name.ok() ? fmt::format("\"{}\"", x.name.text) : "", {}, ck_reference);
+  for (const auto& x : io.inputs)
+    add(ref_kind::input, x.number, x.name.ok() ? fmt::format("\"{}\"", x.name.text) : "", {}, ck_reference);
+  for (const auto& x : io.outputs)
+    add(ref_kind::output, x.number, x.name.ok() ? fmt::format("\"{}\"", x.name.text) : "", {}, ck_reference);
 }
 
 void type_items(std::vector<completion_item>& out) {

@@ -25,8 +25,8 @@ bool spans_lines(std::string_view text, span s) {
 void comment_blocks(const cst::tree& t, std::vector<fold>& out) {
   span run{};
   std::uint32_t run_lines = 0;
-  bool line_start = true;       // only blanks since the last line break
-  std::uint32_t breaks = 0;     // line breaks since the run's last comment
+  bool line_start = true;    // only blanks since the last line break
+  std::uint32_t breaks = 0;  // line breaks since the run's last comment
   const auto close = [&] {
     if (run_lines >= 3) out.push_back({run, true});
     run_lines = 0;

@@ -101,14 +101,21 @@ target_text target_detail(const analysis& a, schema::ref_kind kind, std::uint32_
   using schema::ref_kind;
   target_text out;
   switch (kind) {
-    case ref_kind::param: case ref_kind::proxy_param: case ref_kind::proxied_param: case ref_kind::constructed_param: {
+    case ref_kind::param:
+    case ref_kind::proxy_param:
+    case ref_kind::proxied_param:
+    case ref_kind::constructed_param: {
       const auto& p = a.dev.params[i];
       out.line = param_line(a.dev, p);
       if (p.help.ok()) out.help = std::string(p.help.text);
       break;
     }
-    case ref_kind::assem: case ref_kind::assem_exa: case ref_kind::proxy_assem: case ref_kind::proxied_assem:
-    case ref_kind::proxy_assem_exa: case ref_kind::proxied_assem_exa: {
+    case ref_kind::assem:
+    case ref_kind::assem_exa:
+    case ref_kind::proxy_assem:
+    case ref_kind::proxied_assem:
+    case ref_kind::proxy_assem_exa:
+    case ref_kind::proxied_assem_exa: {
       const auto& as = a.dev.assemblies[i];
       if (as.name.ok()) out.line = fmt::format("\"{}\"", as.name.text);
       if (as.size.is_integer()) out.line += fmt::format(", {}", bytes_and_bits(as.size.magnitude));
@@ -121,7 +128,8 @@ target_text target_detail(const analysis& a, schema::ref_kind kind, std::uint32_
       if (c.help.ok()) out.help = std::string(c.help.text);
       break;
     }
-    case ref_kind::input: case ref_kind::output: {
+    case ref_kind::input:
+    case ref_kind::output: {
       const auto& io = variant_io ? a.dev.variant_io : a.dev.io;
       const auto& d = kind == ref_kind::input ? io.inputs[i] : io.outputs[i];
       if (d.name.ok()) out.line = fmt::format("\"{}\"", d.name.text);
@@ -203,11 +211,12 @@ std::string epath_text(const analysis& a, const cst::field& f) {
 }
 
 // The value of one field, decoded by what the field is.
-std::string field_value(const analysis& a, const schema::keyword_match& m,
-                        const schema::field_desc& d, const cst::field& f) {
+std::string field_value(const analysis& a, const schema::keyword_match& m, const schema::field_desc& d,
+                        const cst::field& f) {
   const auto raw = a.tree.text(f.where);
   if (f.kind == cst::field_kind::empty) return "empty";
-  if (d.type == schema::value_type::epath || (d.type == schema::value_type::member && f.kind == cst::field_kind::string))
+  if (d.type == schema::value_type::epath ||
+      (d.type == schema::value_type::member && f.kind == cst::field_kind::string))
     return epath_text(a, f);
   if (f.kind != cst::field_kind::bare) return "";
   model::value v;
@@ -224,12 +233,14 @@ std::string field_value(const analysis& a, const schema::keyword_match& m,
     if (p && p->type) out += fmt::format(", a {}", p->type->name);
     return out;
   }
-  if ((id == entry_id::io_default) || ((id == entry_id::poll_info || id == entry_id::strobe_info ||
-                                         id == entry_id::cos_info || id == entry_id::cyclic_info ||
-                                         id == entry_id::input_n || id == entry_id::output_n) && name == "mask"))
+  if ((id == entry_id::io_default) ||
+      ((id == entry_id::poll_info || id == entry_id::strobe_info || id == entry_id::cos_info ||
+        id == entry_id::cyclic_info || id == entry_id::input_n || id == entry_id::output_n) &&
+       name == "mask"))
     return out + "\n\n" + describe_io_mask(u);
   if ((id == entry_id::input_n || id == entry_id::output_n) && name == "size") return out + ": " + bytes_and_bits(u);
-  if ((id == entry_id::input_n || id == entry_id::output_n) && name == "significant_bits") return out + ": " + bits_and_bytes(u);
+  if ((id == entry_id::input_n || id == entry_id::output_n) && name == "significant_bits")
+    return out + ": " + bits_and_bytes(u);
   if (is_assembly_like(id) && name == "size") return out + ": " + bytes_and_bits(u);
   if (is_assembly_like(id) && name == "member_size") return out + ": " + bits_and_bytes(u);
   if (id == entry_id::connection_n) {

@@ -3,9 +3,9 @@
 
 #include <algorithm>
 
-#include "lsp/features.hpp"
 #include "emit/json_values.hpp"
 #include "lsp/describe.hpp"
+#include "lsp/features.hpp"
 #include "lsp/locate.hpp"
 #include "lsp/ref_index.hpp"
 #include "schema/text.hpp"
@@ -46,15 +46,26 @@ int symbol_kind(const schema::keyword_desc* k) {
   if (!k) return sk_property;
   using schema::entry_id;
   switch (k->id) {
-    case entry_id::param_n: case entry_id::proxy_param_n: case entry_id::proxied_param_n:
+    case entry_id::param_n:
+    case entry_id::proxy_param_n:
+    case entry_id::proxied_param_n:
     case entry_id::constructed_param_n: return sk_variable;
-    case entry_id::enum_n: case entry_id::enum_par_n: return sk_enum;
-    case entry_id::assem_n: case entry_id::assem_exa_n: case entry_id::proxy_assem_n: case entry_id::proxied_assem_n:
-    case entry_id::proxy_assem_exa_n: case entry_id::proxied_assem_exa_n: case entry_id::variant_n:
-    case entry_id::variant_exa_n: case entry_id::bitstring_variant_n: case entry_id::array_n: return sk_struct;
+    case entry_id::enum_n:
+    case entry_id::enum_par_n: return sk_enum;
+    case entry_id::assem_n:
+    case entry_id::assem_exa_n:
+    case entry_id::proxy_assem_n:
+    case entry_id::proxied_assem_n:
+    case entry_id::proxy_assem_exa_n:
+    case entry_id::proxied_assem_exa_n:
+    case entry_id::variant_n:
+    case entry_id::variant_exa_n:
+    case entry_id::bitstring_variant_n:
+    case entry_id::array_n: return sk_struct;
     case entry_id::connection_n: return sk_event;
     case entry_id::group_n: return sk_namespace;
-    case entry_id::input_n: case entry_id::output_n: return sk_field;
+    case entry_id::input_n:
+    case entry_id::output_n: return sk_field;
     default: return k->numbered ? sk_object : sk_constant;
   }
 }

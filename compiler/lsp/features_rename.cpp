@@ -31,8 +31,9 @@ rename_result rename(const analysis& a, std::uint32_t offset, std::string_view n
   rename_result r;
   const auto s = renamable(a, offset);
   if (!s) {
-    r.error = "Only a defined numbered entry can be renamed: put the cursor on a ParamN, AssemN, ConnectionN, "
-              "InputN... name or on its keyword.";
+    r.error =
+        "Only a defined numbered entry can be renamed: put the cursor on a ParamN, AssemN, ConnectionN, "
+        "InputN... name or on its keyword.";
     return r;
   }
   const auto old_name = name_of(s->kind, s->number);

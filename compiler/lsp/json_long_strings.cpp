@@ -106,7 +106,11 @@ std::size_t string_end(std::string_view body, std::size_t open) {
   return std::string_view::npos;
 }
 
-std::string placeholder(std::size_t i) { return "\x01" "edsc-long-string-" + std::to_string(i); }
+std::string placeholder(std::size_t i) {
+  return "\x01"
+         "edsc-long-string-" +
+         std::to_string(i);
+}
 
 // Puts the decoded strings back where their placeholders are; false unless
 // each placeholder is found exactly once, as a value. A stack, not
@@ -155,9 +159,9 @@ bool decode_json_string(std::string_view raw, std::string& out) {
     while (!stopped && raw.size() - i >= 16) {
       const __m128i block = _mm_loadu_si128(reinterpret_cast<const __m128i*>(raw.data() + i));
       // Signed: bytes of 0x80 and above compare below ' ' too.
-      const __m128i special = _mm_or_si128(_mm_cmplt_epi8(block, _mm_set1_epi8(' ')),
-                                           _mm_or_si128(_mm_cmpeq_epi8(block, _mm_set1_epi8('"')),
-                                                        _mm_cmpeq_epi8(block, _mm_set1_epi8('\\'))));
+      const __m128i special = _mm_or_si128(
+          _mm_cmplt_epi8(block, _mm_set1_epi8(' ')),
+          _mm_or_si128(_mm_cmpeq_epi8(block, _mm_set1_epi8('"')), _mm_cmpeq_epi8(block, _mm_set1_epi8('\\'))));
       const auto mask = static_cast<std::uint32_t>(_mm_movemask_epi8(special));
       _mm_storeu_si128(reinterpret_cast<__m128i*>(d), block);
       const auto n = mask != 0 ? static_cast<std::size_t>(std::countr_zero(mask)) : 16;
@@ -238,7 +242,8 @@ nlohmann::json parse_json(std::string_view body) {
     i = close + 1;
     if (close - open - 1 < long_string) continue;
     std::string decoded;
-    if (!decode_json_string(body.substr(open + 1, close - open - 1), decoded)) return nlohmann::json::parse(body, nullptr, false);
+    if (!decode_json_string(body.substr(open + 1, close - open - 1), decoded))
+      return nlohmann::json::parse(body, nullptr, false);
     rest.append(body.data() + copied, open - copied);
     rest += '"';
     rest += "\\u0001" + placeholder(strings.size()).substr(1);

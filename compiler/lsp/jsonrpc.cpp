@@ -21,7 +21,8 @@ incoming parse_incoming(std::string_view body) {
   const auto id = j.find("id");
   const bool has_id = id != j.end();
   if (has_id) {
-    if (id->is_number_integer() || id->is_string()) in.id = *id;
+    if (id->is_number_integer() || id->is_string())
+      in.id = *id;
     else if (!id->is_null()) {
       in.error = "id must be an integer or a string";
       return in;

@@ -34,9 +34,9 @@ struct rpc_error : std::runtime_error {
 // null when a broken request's id could not be read).
 struct incoming {
   enum class kind { request, notification, response, invalid } what = kind::invalid;
-  json id;          // request, response, invalid (when readable)
+  json id;  // request, response, invalid (when readable)
   std::string method;
-  json params;      // object, array or null
+  json params;        // object, array or null
   std::string error;  // invalid: why
   error_code code = error_code::invalid_request;
 };

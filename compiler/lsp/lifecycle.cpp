@@ -41,7 +41,8 @@ json on_initialize(session& s, const json& params) {
     if (const auto it = params.find("initializationOptions"); it != params.end()) s.set_warnings(warnings_of(*it));
   }
   s.initialized = true;
-  return json{{"capabilities", capabilities()}, {"serverInfo", json{{"name", "edsc"}, {"version", EDSC_VERSION_STRING}}}};
+  return json{{"capabilities", capabilities()},
+              {"serverInfo", json{{"name", "edsc"}, {"version", EDSC_VERSION_STRING}}}};
 }
 
 void on_initialized(session&, json&) {}

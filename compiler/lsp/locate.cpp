@@ -10,8 +10,8 @@ namespace {
 // offset, or npos.
 template <class Vec, class Begin>
 std::uint32_t last_at_or_before(const Vec& v, std::uint32_t offset, Begin begin) {
-  const auto it = std::upper_bound(v.begin(), v.end(), offset,
-                                   [&](std::uint32_t o, const auto& x) { return o < begin(x); });
+  const auto it =
+      std::upper_bound(v.begin(), v.end(), offset, [&](std::uint32_t o, const auto& x) { return o < begin(x); });
   return it == v.begin() ? cst::npos : static_cast<std::uint32_t>(it - v.begin() - 1);
 }
 

@@ -18,9 +18,7 @@ struct location {
 };
 
 // A cursor touches a token when it is inside it or just after its last byte.
-[[nodiscard]] constexpr bool touches(span s, std::uint32_t offset) {
-  return s.begin <= offset && offset <= s.end;
-}
+[[nodiscard]] constexpr bool touches(span s, std::uint32_t offset) { return s.begin <= offset && offset <= s.end; }
 
 [[nodiscard]] location locate(const cst::tree& t, std::uint32_t offset);
 

@@ -18,9 +18,12 @@ struct utf8_char {
 utf8_char char_at(std::string_view s, std::size_t i) {
   const auto b = static_cast<unsigned char>(s[i]);
   std::uint32_t len = 1;
-  if (b >= 0xF0 && b <= 0xF4) len = 4;
-  else if (b >= 0xE0) len = b <= 0xEF ? 3 : 1;
-  else if (b >= 0xC2) len = 2;
+  if (b >= 0xF0 && b <= 0xF4)
+    len = 4;
+  else if (b >= 0xE0)
+    len = b <= 0xEF ? 3 : 1;
+  else if (b >= 0xC2)
+    len = 2;
   if (len == 1 || i + len > s.size()) return {1, 1};
   for (std::uint32_t k = 1; k < len; ++k) {
     if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return {1, 1};

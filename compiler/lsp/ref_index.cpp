@@ -180,15 +180,26 @@ std::uint32_t defining_entry(const model::device& d, ref_kind kind, std::uint32_
   if (i == model::none) return cst::npos;
   const auto& io = variant_io ? d.variant_io : d.io;
   switch (kind) {
-    case ref_kind::param: case ref_kind::proxy_param: case ref_kind::proxied_param:
+    case ref_kind::param:
+    case ref_kind::proxy_param:
+    case ref_kind::proxied_param:
     case ref_kind::constructed_param: return d.params[i].from.entry;
-    case ref_kind::enum_: case ref_kind::proxy_enum: case ref_kind::proxied_enum: return d.enums[i].from.entry;
-    case ref_kind::assem: case ref_kind::assem_exa: case ref_kind::proxy_assem: case ref_kind::proxied_assem:
-    case ref_kind::proxy_assem_exa: case ref_kind::proxied_assem_exa: return d.assemblies[i].from.entry;
-    case ref_kind::variant: case ref_kind::variant_exa: case ref_kind::bitstring_variant: return d.variants[i].from.entry;
+    case ref_kind::enum_:
+    case ref_kind::proxy_enum:
+    case ref_kind::proxied_enum: return d.enums[i].from.entry;
+    case ref_kind::assem:
+    case ref_kind::assem_exa:
+    case ref_kind::proxy_assem:
+    case ref_kind::proxied_assem:
+    case ref_kind::proxy_assem_exa:
+    case ref_kind::proxied_assem_exa: return d.assemblies[i].from.entry;
+    case ref_kind::variant:
+    case ref_kind::variant_exa:
+    case ref_kind::bitstring_variant: return d.variants[i].from.entry;
     case ref_kind::array: return d.arrays[i].from.entry;
     case ref_kind::connection: return d.connections[i].from.entry;
-    case ref_kind::proxy_connection: case ref_kind::proxied_connection: return d.proxy_connections[i].from.entry;
+    case ref_kind::proxy_connection:
+    case ref_kind::proxied_connection: return d.proxy_connections[i].from.entry;
     case ref_kind::group: return d.groups[i].from.entry;
     case ref_kind::input: return io.inputs[i].from.entry;
     case ref_kind::output: return io.outputs[i].from.entry;

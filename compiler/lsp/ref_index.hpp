@@ -24,8 +24,8 @@ struct ref_site {
   span digits;  // the number inside `name`: what a renumbering replaces
   std::uint32_t number = 0;
   schema::ref_kind kind = schema::ref_kind::param;
-  bool declaration = false;  // the entry's own keyword
-  bool variant_io = false;   // an InputN/OutputN site in [Variant_IO_Info]
+  bool declaration = false;         // the entry's own keyword
+  bool variant_io = false;          // an InputN/OutputN site in [Variant_IO_Info]
   std::uint32_t entry = cst::npos;  // CST entry the site is in
 };
 

@@ -54,9 +54,7 @@ void session::log_message(const std::string& message) {
   send(notification("window/logMessage", json{{"type", 3}, {"message", message}}));
 }
 
-void session::analyse(document& d) {
-  d.analyse(options);
-}
+void session::analyse(document& d) { d.analyse(options); }
 
 document& session::analysed(const json& params) {
   auto* d = docs.find(uri_from(params));

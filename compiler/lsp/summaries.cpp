@@ -29,12 +29,16 @@ std::string_view summary_of(const schema::keyword_desc& k) {
     case entry_id::class_n: return "A network (and profile) the device belongs to.";
     case entry_id::io_default: return "DeviceNet I/O connection types used by default (a mask of the *Info types).";
     case entry_id::poll_info: return "Polled I/O: connection types it can combine with, default InputN and OutputN.";
-    case entry_id::strobe_info: return "Bit-strobed I/O: connection types it can combine with, default InputN and OutputN.";
-    case entry_id::cos_info: return "Change-of-state I/O: connection types it can combine with, default InputN and OutputN.";
+    case entry_id::strobe_info:
+      return "Bit-strobed I/O: connection types it can combine with, default InputN and OutputN.";
+    case entry_id::cos_info:
+      return "Change-of-state I/O: connection types it can combine with, default InputN and OutputN.";
     case entry_id::cyclic_info: return "Cyclic I/O: connection types it can combine with, default InputN and OutputN.";
     case entry_id::input_n: return "Data the device produces on a DeviceNet I/O connection: size, bits, path.";
-    case entry_id::input_exa_n: return "A DeviceNet input data set whose size may come from a parameter (`ParamN:offset` members).";
-    case entry_id::output_exa_n: return "A DeviceNet output data set whose size may come from a parameter (`ParamN:offset` members).";
+    case entry_id::input_exa_n:
+      return "A DeviceNet input data set whose size may come from a parameter (`ParamN:offset` members).";
+    case entry_id::output_exa_n:
+      return "A DeviceNet output data set whose size may come from a parameter (`ParamN:offset` members).";
     case entry_id::output_n: return "Data the device consumes on a DeviceNet I/O connection: size, bits, path.";
     case entry_id::pc_max_inst: return "Number of Parameter Object instances.";
     case entry_id::pc_descriptor: return "Parameter Object class descriptor bits.";
@@ -59,8 +63,10 @@ std::string_view summary_of(const schema::keyword_desc& k) {
     case entry_id::variant_exa_n: return "A variant whose choices may be sized by parameters.";
     case entry_id::bitstring_variant_n: return "A member chosen by one bit of a selector.";
     case entry_id::array_n: return "An array of elements of one layout.";
-    case entry_id::connection_n: return "An I/O connection a scanner may open: trigger and transport, parameters, RPI, sizes, formats, path.";
-    case entry_id::proxy_connection_n: return "A connection of the proxy (the adapter) standing for a module's connection.";
+    case entry_id::connection_n:
+      return "An I/O connection a scanner may open: trigger and transport, parameters, RPI, sizes, formats, path.";
+    case entry_id::proxy_connection_n:
+      return "A connection of the proxy (the adapter) standing for a module's connection.";
     case entry_id::proxied_connection_n: return "A connection of a proxied device, opened through its proxy.";
     case entry_id::pitns: return "Whether the device supports Produced Inhibit Time in network format.";
     case entry_id::pitns_usec: return "Whether Produced Inhibit Time is given in microseconds.";
@@ -73,11 +79,13 @@ std::string_view summary_of(const schema::keyword_desc& k) {
     case entry_id::slot_display_rule: return "Parameter that says how slots are shown.";
     case entry_id::width: return "Number of slots the module takes.";
     case entry_id::rack_n: return "A rack and the modules it may hold.";
-    case entry_id::external_id: return "An identifier of the module as a hex byte string (e.g. \"85 02\"); its meaning is not documented.";
+    case entry_id::external_id:
+      return "An identifier of the module as a hex byte string (e.g. \"85 02\"); its meaning is not documented.";
     case entry_id::object_setting: return "A class-level setting of this CIP object class.";
     case entry_id::attribute_list: return "Attributes the object class implements.";
     case entry_id::service_list: return "Services the object class implements.";
-    case entry_id::service_description_n: return "A service of the object class: code, name, path, request and response.";
+    case entry_id::service_description_n:
+      return "A service of the object class: code, name, path, request and response.";
   }
   return "";
 }

@@ -7,7 +7,12 @@
 namespace edsc::model {
 
 enum class assembly_kind : std::uint8_t {
-  assem, assem_exa, proxy_assem, proxied_assem, proxy_assem_exa, proxied_assem_exa,
+  assem,
+  assem_exa,
+  proxy_assem,
+  proxied_assem,
+  proxy_assem_exa,
+  proxied_assem_exa,
 };
 
 // One `size, reference` pair. `size` is in bits; `ref` is a reference,
@@ -48,8 +53,7 @@ struct variant {
 struct array {
   std::uint32_t number = 0;
   origin from;
-  value name, path, descriptor, help, reserved1, reserved2, reserved3, element_size, element_type,
-      dimensions;
+  value name, path, descriptor, help, reserved1, reserved2, reserved3, element_size, element_type, dimensions;
   std::vector<value> extents;
 };
 

@@ -10,7 +10,7 @@ namespace edsc::model {
 // A keyword with its fields, for entries whose meaning is "a named setting"
 // ([Capacity] Max*, object-class keywords, safety keywords, RackN).
 struct setting {
-  std::string_view keyword;  // as written
+  std::string_view keyword;    // as written
   std::string_view canonical;  // schema spelling with N for numbered keywords' stem
   std::uint32_t number = 0;    // N of numbered keywords
   origin from;
@@ -38,8 +38,7 @@ struct capacity {
 struct rack {
   std::uint32_t number = 0;
   origin from;
-  value vendor, product_type, product_code, major_revision, minor_revision, reserved1, reserved2,
-      reserved3;
+  value vendor, product_type, product_code, major_revision, minor_revision, reserved1, reserved2, reserved3;
   std::vector<value> slots;
 };
 

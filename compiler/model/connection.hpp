@@ -11,8 +11,8 @@ struct trigger_transport {
   std::uint16_t transport_classes = 0;  // bit n = class n
   bool trigger_cyclic = false, trigger_cos = false, trigger_application = false;
   bool listen_only = false, input_only = false, exclusive_owner = false, redundant_owner = false;
-  bool server = false;          // bit 31
-  std::uint32_t reserved = 0;   // bits 19-23 and 28-30 as found
+  bool server = false;         // bit 31
+  std::uint32_t reserved = 0;  // bits 19-23 and 28-30 as found
 };
 
 // One direction of ConnectionN field 2 (§3.11.3).
@@ -42,7 +42,7 @@ struct app_kind {
   // then inputs another connection produces); where it names none, an
   // exclusive owner, what a connection with outputs of its own is.
   app_type type = app_type::exclusive_owner;
-  unsigned named = 0;  // how many of bits 24-26 are set: only 1 is unambiguous
+  unsigned named = 0;       // how many of bits 24-26 are set: only 1 is unambiguous
   bool configured = false;  // the point takes configuration data (a configuration assembly)
   [[nodiscard]] bool unambiguous() const { return named == 1; }
 };
@@ -57,9 +57,8 @@ struct connection {
   connection_kind kind = connection_kind::connection;
   std::uint32_t number = 0;
   origin from;
-  value trigger, params, ot_rpi, ot_size, ot_format, to_rpi, to_size, to_format,
-      proxy_config_size, proxy_config_format, target_config_size, target_config_format, name,
-      help, path, safety_async, safety_max_consumers;
+  value trigger, params, ot_rpi, ot_size, ot_format, to_rpi, to_size, to_format, proxy_config_size, proxy_config_format,
+      target_config_size, target_config_format, name, help, path, safety_async, safety_max_consumers;
   bool decoded = false;
   trigger_transport tt;
   connection_params cp;

@@ -2,9 +2,9 @@
 // Value decoders for the EDS lexemes of EDS_FORMAT.md §1.6. Pure functions on
 // text: no allocation except where a result needs its own bytes.
 #include <cstdint>
+#include <deque>
 #include <string>
 #include <string_view>
-#include <deque>
 #include <vector>
 
 #include "model/epath.hpp"

@@ -19,8 +19,7 @@ int hex_digit(char c) {
 }
 
 // Reads 1..max_digits decimal digits at s[i]; advances i.
-bool read_digits(std::string_view s, std::size_t& i, std::size_t max_digits, std::uint32_t& out,
-                 std::size_t& count) {
+bool read_digits(std::string_view s, std::size_t& i, std::size_t max_digits, std::uint32_t& out, std::size_t& count) {
   out = 0;
   count = 0;
   while (i < s.size() && is_digit(s[i])) {
@@ -102,9 +101,8 @@ bool real(std::string_view s, double& out) {
 bool date(std::string_view s, model::date& out, bool& lexed) {
   std::size_t i = 0, n = 0;
   std::uint32_t m = 0, d = 0, y = 0;
-  lexed = read_digits(s, i, 2, m, n) && i < s.size() && s[i++] == '-' &&
-          read_digits(s, i, 2, d, n) && i < s.size() && s[i++] == '-' &&
-          read_digits(s, i, 4, y, n) && (n == 2 || n == 4) && i == s.size();
+  lexed = read_digits(s, i, 2, m, n) && i < s.size() && s[i++] == '-' && read_digits(s, i, 2, d, n) && i < s.size() &&
+          s[i++] == '-' && read_digits(s, i, 4, y, n) && (n == 2 || n == 4) && i == s.size();
   if (!lexed) return false;
   if (n == 2) y += y < 70 ? 2000 : 1900;  // two-digit years, tolerated by eds_pie
   out = {static_cast<std::uint16_t>(y), static_cast<std::uint8_t>(m), static_cast<std::uint8_t>(d)};
@@ -116,9 +114,8 @@ bool date(std::string_view s, model::date& out, bool& lexed) {
 bool time(std::string_view s, time_of_day& out, bool& lexed) {
   std::size_t i = 0, n = 0;
   std::uint32_t h = 0, m = 0, sec = 0;
-  lexed = read_digits(s, i, 2, h, n) && i < s.size() && s[i++] == ':' &&
-          read_digits(s, i, 2, m, n) && i < s.size() && s[i++] == ':' &&
-          read_digits(s, i, 2, sec, n) && i == s.size();
+  lexed = read_digits(s, i, 2, h, n) && i < s.size() && s[i++] == ':' && read_digits(s, i, 2, m, n) && i < s.size() &&
+          s[i++] == ':' && read_digits(s, i, 2, sec, n) && i == s.size();
   if (!lexed) return false;
   out = {static_cast<std::uint8_t>(h), static_cast<std::uint8_t>(m), static_cast<std::uint8_t>(sec)};
   return h <= 23 && m <= 59 && sec <= 59;
@@ -127,8 +124,7 @@ bool time(std::string_view s, time_of_day& out, bool& lexed) {
 bool revision(std::string_view s, model::revision& out, bool& lexed) {
   std::size_t i = 0, n = 0;
   std::uint32_t a = 0, b = 0;
-  lexed = read_digits(s, i, 9, a, n) && i < s.size() && s[i++] == '.' &&
-          read_digits(s, i, 9, b, n) && i == s.size();
+  lexed = read_digits(s, i, 9, a, n) && i < s.size() && s[i++] == '.' && read_digits(s, i, 9, b, n) && i == s.size();
   if (!lexed) return false;
   out = {a, b};
   // Both halves are USINT on the wire (Identity revision, file revision).

@@ -157,10 +157,9 @@ void segments(const std::vector<item>& it, bool packed, model::epath& out, std::
     }
     const std::uint8_t b = it[i].byte;
     if (b >= 0x20 && b <= 0x3F) {  // logical segment: type in bits 2-4, format in bits 0-1
-      static constexpr segment_kind logical[] = {segment_kind::class_id, segment_kind::instance,
-                                                 segment_kind::member, segment_kind::connection_point,
-                                                 segment_kind::attribute, segment_kind::unknown,
-                                                 segment_kind::unknown, segment_kind::unknown};
+      static constexpr segment_kind logical[] = {
+          segment_kind::class_id,  segment_kind::instance, segment_kind::member,  segment_kind::connection_point,
+          segment_kind::attribute, segment_kind::unknown,  segment_kind::unknown, segment_kind::unknown};
       seg.kind = logical[(b >> 2) & 7];
       const unsigned fmt = b & 3;
       bool ok = false;
@@ -190,21 +189,33 @@ void segments(const std::vector<item>& it, bool packed, model::epath& out, std::
       std::size_t at = i + 1;
       if ((b & 0x0F) == 0x0F) {  // extended port number follows
         epath_segment tmp;
-        if (!read_number(it, at, 2, tmp)) { out.complete = false; out.segments.push_back(seg); break; }
+        if (!read_number(it, at, 2, tmp)) {
+          out.complete = false;
+          out.segments.push_back(seg);
+          break;
+        }
         seg.value = tmp.value;
         at += 2;
       } else {
         seg.value = b & 0x0F;
       }
       if (b & 0x10) {  // sized link address, padded to an even length
-        if (at >= it.size()) { out.complete = false; out.segments.push_back(seg); break; }
+        if (at >= it.size()) {
+          out.complete = false;
+          out.segments.push_back(seg);
+          break;
+        }
         const std::size_t len = it[at].byte;
         at += 1 + len;
         if ((at - i) % 2) ++at;
         if (at > it.size()) out.complete = false;
       } else {
         epath_segment tmp;
-        if (!read_number(it, at, 1, tmp)) { out.complete = false; out.segments.push_back(seg); break; }
+        if (!read_number(it, at, 1, tmp)) {
+          out.complete = false;
+          out.segments.push_back(seg);
+          break;
+        }
         seg.link_address = tmp.value;
         seg.placeholder = tmp.placeholder;  // `01 SLOT`: the link address is the module's slot
         ++at;
@@ -213,10 +224,18 @@ void segments(const std::vector<item>& it, bool packed, model::epath& out, std::
       i = at;
     } else if (b == 0x91) {  // ANSI extended symbol: length, characters, pad to even
       seg.kind = segment_kind::symbol;
-      if (i + 1 >= it.size()) { out.complete = false; out.segments.push_back(seg); break; }
+      if (i + 1 >= it.size()) {
+        out.complete = false;
+        out.segments.push_back(seg);
+        break;
+      }
       const std::size_t len = it[i + 1].byte;
       seg.value = static_cast<std::uint32_t>(len);
-      if (i + 2 + len > it.size()) { out.complete = false; out.segments.push_back(seg); break; }
+      if (i + 2 + len > it.size()) {
+        out.complete = false;
+        out.segments.push_back(seg);
+        break;
+      }
       std::string sym;
       for (std::size_t k = 0; k < len; ++k) sym.push_back(static_cast<char>(it[i + 2 + k].byte));
       seg.symbol = storage.emplace_back(std::move(sym));
@@ -253,14 +272,21 @@ void unescape_append(std::string_view s, std::string& out) {
       case 'x': {
         int v = 0, n = 0;
         while (n < 2 && i + 1 < s.size() && hex_digit(s[i + 1]) >= 0) v = v * 16 + hex_digit(s[++i]), ++n;
-        if (n == 0) out.append("\\x"); else out.push_back(static_cast<char>(v));
+        if (n == 0)
+          out.append("\\x");
+        else
+          out.push_back(static_cast<char>(v));
         break;
       }
       case 'u': {
         std::uint32_t v = 0;
         int n = 0;
-        while (n < 4 && i + 1 < s.size() && hex_digit(s[i + 1]) >= 0) v = v * 16 + static_cast<std::uint32_t>(hex_digit(s[++i])), ++n;
-        if (n == 0) { out.append("\\u"); break; }
+        while (n < 4 && i + 1 < s.size() && hex_digit(s[i + 1]) >= 0)
+          v = v * 16 + static_cast<std::uint32_t>(hex_digit(s[++i])), ++n;
+        if (n == 0) {
+          out.append("\\u");
+          break;
+        }
         if (v < 0x80) {
           out.push_back(static_cast<char>(v));
         } else if (v < 0x800) {
@@ -285,14 +311,24 @@ bool base64(std::string_view s, std::vector<std::uint8_t>& out) {
   out.reserve(s.size() * 3 / 4);
   for (char c : s) {
     int v;
-    if (c >= 'A' && c <= 'Z') v = c - 'A';
-    else if (c >= 'a' && c <= 'z') v = c - 'a' + 26;
-    else if (c >= '0' && c <= '9') v = c - '0' + 52;
-    else if (c == '+') v = 62;
-    else if (c == '/') v = 63;
-    else if (c == '=') { ++pad; ++chars; continue; }
-    else if (c == ' ' || c == '\t' || c == '\r' || c == '\n') continue;
-    else return false;
+    if (c >= 'A' && c <= 'Z')
+      v = c - 'A';
+    else if (c >= 'a' && c <= 'z')
+      v = c - 'a' + 26;
+    else if (c >= '0' && c <= '9')
+      v = c - '0' + 52;
+    else if (c == '+')
+      v = 62;
+    else if (c == '/')
+      v = 63;
+    else if (c == '=') {
+      ++pad;
+      ++chars;
+      continue;
+    } else if (c == ' ' || c == '\t' || c == '\r' || c == '\n')
+      continue;
+    else
+      return false;
     if (pad) return false;  // data after padding
     ++chars;
     acc = (acc << 6) | static_cast<std::uint32_t>(v);

@@ -81,7 +81,7 @@ namespace edsc::model {
 // [Connection Manager] and [Port].
 struct object_class {
   std::uint32_t section = none;
-  std::string_view name;     // as written
+  std::string_view name;         // as written
   std::uint32_t class_code = 0;  // from the section name; 0 when unknown
   std::vector<setting> settings;
 };
@@ -89,7 +89,7 @@ struct object_class {
 // Every section in file order, with what the schema made of it.
 struct section_info {
   std::uint32_t section = none;
-  std::string_view name;  // as written
+  std::string_view name;                       // as written
   const schema::section_desc* desc = nullptr;  // nullptr: unknown
   bool vendor_specific = false;                // `1_LEOSUPPORT`
   bool canonical_spelling = true;              // false for `[variant_io_info]`
@@ -135,7 +135,7 @@ struct device {
   std::vector<array> arrays;
   std::vector<connection> connections;
   std::vector<connection> proxy_connections;  // ProxyConnectN / ProxiedConnectN, apart: no rule reads them as real
-  std::vector<setting> connection_settings;  // PITNS, safety keywords
+  std::vector<setting> connection_settings;   // PITNS, safety keywords
   std::vector<port> ports;
   capacity cap;
   modular mod;
@@ -143,8 +143,8 @@ struct device {
   std::vector<section_info> sections;
   std::vector<raw_entry> unknown;
 
-  std::vector<epath> paths;          // value::path indexes here
-  std::deque<std::string> strings;   // decoded text that is not a plain view of the source
+  std::vector<epath> paths;         // value::path indexes here
+  std::deque<std::string> strings;  // decoded text that is not a plain view of the source
 
   // Reference targets: (kind, N) -> index in the vector holding that kind.
   // The first definition wins when a keyword is duplicated.

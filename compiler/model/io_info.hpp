@@ -8,7 +8,10 @@ namespace edsc::model {
 
 // DeviceNet predefined connection types: the bits of every IO_Info mask.
 enum io_bit : std::uint16_t {
-  io_poll = 0x0001, io_strobe = 0x0002, io_cos = 0x0004, io_cyclic = 0x0008,
+  io_poll = 0x0001,
+  io_strobe = 0x0002,
+  io_cos = 0x0004,
+  io_cyclic = 0x0008,
   io_multicast_poll = 0x0010,  // unconfirmed (EDS_FORMAT.md §3.4)
 };
 

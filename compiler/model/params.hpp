@@ -10,8 +10,12 @@ namespace edsc::model {
 
 // Parameter descriptor bits (EDS_FORMAT.md §3.7.2).
 enum param_descriptor_bit : std::uint16_t {
-  pd_settable_path = 0x0001, pd_enumerated = 0x0002, pd_scaling = 0x0004,
-  pd_scaling_links = 0x0008, pd_read_only = 0x0010, pd_monitor = 0x0020,
+  pd_settable_path = 0x0001,
+  pd_enumerated = 0x0002,
+  pd_scaling = 0x0004,
+  pd_scaling_links = 0x0008,
+  pd_read_only = 0x0010,
+  pd_monitor = 0x0020,
   pd_extended_precision = 0x0040,
 };
 
@@ -39,12 +43,11 @@ struct param {
   param_kind kind = param_kind::param;
   std::uint32_t number = 0;
   origin from;
-  value reserved, link_path_size, link_path, descriptor, data_type, data_size, name, units, help,
-      min, max, default_value, scaling_multiplier, scaling_divisor, scaling_base, scaling_offset,
-      multiplier_link, divisor_link, base_link, offset_link, decimal_precision,
-      international_name, international_units, international_help;
+  value reserved, link_path_size, link_path, descriptor, data_type, data_size, name, units, help, min, max,
+      default_value, scaling_multiplier, scaling_divisor, scaling_base, scaling_offset, multiplier_link, divisor_link,
+      base_link, offset_link, decimal_precision, international_name, international_units, international_help;
   const schema::cip_type_info* type = nullptr;
-  bool legacy_type = false;  // field 5 used a legacy DeviceNet code (§4.2)
+  bool legacy_type = false;             // field 5 used a legacy DeviceNet code (§4.2)
   std::uint32_t enum_index = none;      // device::enums entry describing it
   std::uint32_t enum_par_index = none;  // device::enum_pars entry describing it
   std::vector<value> extra;             // fields beyond 24 (ConstructedParamN: all fields)

@@ -24,7 +24,18 @@ enum class value_state : std::uint8_t {
 };
 
 enum class value_kind : std::uint8_t {
-  none, integer, real, string, date, time, revision, epath, reference, keyword, dataset, bare,
+  none,
+  integer,
+  real,
+  string,
+  date,
+  time,
+  revision,
+  epath,
+  reference,
+  keyword,
+  dataset,
+  bare,
 };
 
 enum class invalid_reason : std::uint8_t {
@@ -85,12 +96,12 @@ struct value {
   value_state state = value_state::absent;
   value_kind kind = value_kind::none;
   invalid_reason why = invalid_reason::none;
-  std::uint8_t cip = 0;   // CIP type code an integer was read as
-  std::string_view text;  // decoded string / keyword / reference spelling
-  bool negative : 1 = false;    // integer sign
-  bool hex : 1 = false;         // integer written as 0x...
-  bool wide : 1 = false;        // string written L"..."
-  bool is_ref : 1 = false;      // `ref` is meaningful (references and number refs != 0)
+  std::uint8_t cip = 0;               // CIP type code an integer was read as
+  std::string_view text;              // decoded string / keyword / reference spelling
+  bool negative : 1 = false;          // integer sign
+  bool hex : 1 = false;               // integer written as 0x...
+  bool wide : 1 = false;              // string written L"..."
+  bool is_ref : 1 = false;            // `ref` is meaningful (references and number refs != 0)
   schema::ref_mask allowed : 24 = 0;  // kinds the schema allows a reference to name
   union {
     reference ref{};     // is_ref: references and number_ref fields

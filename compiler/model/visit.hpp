@@ -18,13 +18,13 @@ void for_each_value(Dev& d, F&& f) {
     for (auto& v : vec) f(v);
   };
   auto& fi = d.file;
-  for (auto* v : {&fi.desc_text, &fi.create_date, &fi.create_time, &fi.mod_date, &fi.mod_time,
-                  &fi.revision, &fi.home_url, &fi.exclude, &fi.eds_file_crc})
+  for (auto* v : {&fi.desc_text, &fi.create_date, &fi.create_time, &fi.mod_date, &fi.mod_time, &fi.revision,
+                  &fi.home_url, &fi.exclude, &fi.eds_file_crc})
     f(*v);
   auto& id = d.identity;
-  for (auto* v : {&id.vend_code, &id.vend_name, &id.prod_type, &id.prod_type_str, &id.prod_code,
-                  &id.maj_rev, &id.min_rev, &id.prod_name, &id.catalog, &id.icon, &id.icon_contents,
-                  &id.application_profiles_assembly})
+  for (auto* v :
+       {&id.vend_code, &id.vend_name, &id.prod_type, &id.prod_type_str, &id.prod_code, &id.maj_rev, &id.min_rev,
+        &id.prod_name, &id.catalog, &id.icon, &id.icon_contents, &id.application_profiles_assembly})
     f(*v);
   for (auto& c : d.classes.classes) f(c.network), all(c.more);
   for (auto* io : {&d.io, &d.variant_io}) {

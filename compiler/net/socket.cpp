@@ -71,7 +71,8 @@ result<endpoint> resolve(const std::string& host_port, std::uint16_t port) {
     const auto p = host_port.substr(colon + 1);
     char* end = nullptr;
     const auto n = std::strtoul(p.c_str(), &end, 10);
-    if (p.empty() || *end != '\0' || n == 0 || n > 65535) return fail(error{error_id::address, fmt::format("bad port in {}", host_port)});
+    if (p.empty() || *end != '\0' || n == 0 || n > 65535)
+      return fail(error{error_id::address, fmt::format("bad port in {}", host_port)});
     port = static_cast<std::uint16_t>(n);
     host = host_port.substr(0, colon);
   }
@@ -83,7 +84,8 @@ result<endpoint> resolve(const std::string& host_port, std::uint16_t port) {
   hints.ai_socktype = SOCK_STREAM;
   addrinfo* found = nullptr;
   if (const int rc = ::getaddrinfo(host.c_str(), nullptr, &hints, &found); rc != 0 || !found)
-    return fail(error{error_id::address, fmt::format("cannot resolve {}: {}", host, rc ? ::gai_strerror(rc) : "no IPv4 address")});
+    return fail(error{error_id::address,
+                      fmt::format("cannot resolve {}: {}", host, rc ? ::gai_strerror(rc) : "no IPv4 address")});
   e.addr.sin_addr = reinterpret_cast<const sockaddr_in*>(found->ai_addr)->sin_addr;
   ::freeaddrinfo(found);
   return e;
@@ -91,15 +93,19 @@ result<endpoint> resolve(const std::string& host_port, std::uint16_t port) {
 
 result<fd> tcp_connect(const endpoint& to, clock::time_point deadline) {
   fd s(::socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0));
-  if (!s.valid()) return fail(error{error_id::socket, fmt::format("cannot create a TCP socket: {}", errno_text(errno))});
+  if (!s.valid())
+    return fail(error{error_id::socket, fmt::format("cannot create a TCP socket: {}", errno_text(errno))});
   if (::connect(s.get(), reinterpret_cast<const sockaddr*>(&to.addr), sizeof to.addr) != 0 && errno != EINPROGRESS)
-    return fail(error{error_id::connect, fmt::format("cannot connect to {}: {}", to_string(to.addr), errno_text(errno))});
+    return fail(
+        error{error_id::connect, fmt::format("cannot connect to {}: {}", to_string(to.addr), errno_text(errno))});
   if (!wait_for(s.get(), POLLOUT, deadline))
-    return fail(error{error_id::timeout, fmt::format("no TCP connection to {} within the timeout", to_string(to.addr))});
+    return fail(
+        error{error_id::timeout, fmt::format("no TCP connection to {} within the timeout", to_string(to.addr))});
   int err = 0;
   socklen_t len = sizeof err;
   ::getsockopt(s.get(), SOL_SOCKET, SO_ERROR, &err, &len);
-  if (err != 0) return fail(error{error_id::connect, fmt::format("cannot connect to {}: {}", to_string(to.addr), errno_text(err))});
+  if (err != 0)
+    return fail(error{error_id::connect, fmt::format("cannot connect to {}: {}", to_string(to.addr), errno_text(err))});
   return s;
 }
 
@@ -112,7 +118,8 @@ result<void> send_all(int s, cip::byte_view b, clock::time_point deadline) {
       continue;
     }
     if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR)) {
-      if (!wait_for(s, POLLOUT, deadline)) return error{error_id::timeout, "the device does not take our request within the timeout"};
+      if (!wait_for(s, POLLOUT, deadline))
+        return error{error_id::timeout, "the device does not take our request within the timeout"};
       continue;
     }
     return error{error_id::closed, fmt::format("sending to the device failed: {}", errno_text(errno))};
@@ -132,7 +139,8 @@ std::optional<received> recv_some(int s, std::uint8_t* out, std::size_t len, clo
 
 result<fd> udp_socket(const sockaddr_in& local) {
   fd s(::socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0));
-  if (!s.valid()) return fail(error{error_id::socket, fmt::format("cannot create a UDP socket: {}", errno_text(errno))});
+  if (!s.valid())
+    return fail(error{error_id::socket, fmt::format("cannot create a UDP socket: {}", errno_text(errno))});
   // No SO_REUSEADDR: with it, Linux lets a second program bind the same
   // address and port, and the datagrams meant for one go to the other.
   if (::bind(s.get(), reinterpret_cast<const sockaddr*>(&local), sizeof local) != 0) {
@@ -140,8 +148,8 @@ result<fd> udp_socket(const sockaddr_in& local) {
       return fail(error{error_id::socket, fmt::format("cannot bind UDP {}: {}", to_string(local), errno_text(errno))});
     char addr[INET_ADDRSTRLEN] = {};
     ::inet_ntop(AF_INET, &local.sin_addr, addr, sizeof addr);
-    return fail(error{error_id::socket,
-                      fmt::format("UDP port {} on {} is already in use by another program", ntohs(local.sin_port), addr)});
+    return fail(error{error_id::socket, fmt::format("UDP port {} on {} is already in use by another program",
+                                                    ntohs(local.sin_port), addr)});
   }
   return s;
 }

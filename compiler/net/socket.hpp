@@ -29,7 +29,7 @@ inline constexpr std::string_view timeout = "live-timeout";            // nothin
 inline constexpr std::string_view closed = "live-closed";              // the device closed or reset the connection
 inline constexpr std::string_view malformed = "live-malformed-reply";  // a reply the codec cannot decode
 inline constexpr std::string_view unexpected = "live-unexpected-reply";  // well formed, but not an answer to ours
-inline constexpr std::string_view refused = "live-refused";            // the device said no (a status)
+inline constexpr std::string_view refused = "live-refused";              // the device said no (a status)
 inline constexpr std::string_view too_large = "live-request-too-large";  // a request of ours no field can hold
 }  // namespace error_id
 

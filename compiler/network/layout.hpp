@@ -28,8 +28,8 @@ struct image_layout {
 struct layout_problem {
   bool input = true;
   std::size_t node = 0;
-  bool overlap = false;       // else: past the end of the slave area
-  std::size_t other = 0;      // the node overlapped (overlap only)
+  bool overlap = false;   // else: past the end of the slave area
+  std::size_t other = 0;  // the node overlapped (overlap only)
   std::uint32_t offset = 0, size = 0;
 };
 

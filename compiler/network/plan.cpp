@@ -35,8 +35,9 @@ void collect_sizes(const model::io_info& io, eds_offer& o) {
     for (const auto& d : *list) {
       if (!d.mask.is_integer() || !d.size.is_integer()) continue;
       for (std::size_t t = 0; t < conn_type_count; ++t)
-        if ((d.mask.as_uint() & (1u << t)) != 0) (d.output ? o.outputs : o.inputs)[t].insert(
-            static_cast<std::uint32_t>(std::min<std::uint64_t>(d.size.as_uint(), 0xFFFFFFFFu)));
+        if ((d.mask.as_uint() & (1u << t)) != 0)
+          (d.output ? o.outputs : o.inputs)[t].insert(
+              static_cast<std::uint32_t>(std::min<std::uint64_t>(d.size.as_uint(), 0xFFFFFFFFu)));
     }
 }
 
@@ -220,8 +221,7 @@ class checker {
       const auto other = c.type == conn_type::cos ? conn_type::cyclic : conn_type::cos;
       if ((c.type == conn_type::cos || c.type == conn_type::cyclic) && seen[static_cast<std::size_t>(other)]) {
         add(diag_id::net_connection_conflict, c.where,
-            fmt::format("node '{}' lists both COS and cyclic; they share connection instance 4, so use one",
-                        pn.name));
+            fmt::format("node '{}' lists both COS and cyclic; they share connection instance 4, so use one", pn.name));
         continue;
       }
       planned_connection pc{c.type, 0, 0};
@@ -260,9 +260,9 @@ class checker {
     if (!asked.given) return fallback;
     if (allowed.count(asked.value) == 0) {
       add(diag_id::net_size_not_allowed, asked.where,
-          fmt::format("node '{}': {} {} of {}; its EDS allows {} for {} ([IO_Info] / [Variant_IO_Info])",
-                      pn.name, name_of(t), input ? "input" : "output", plural(asked.value, "byte"),
-                      size_list(allowed), label_of(t)));
+          fmt::format("node '{}': {} {} of {}; its EDS allows {} for {} ([IO_Info] / [Variant_IO_Info])", pn.name,
+                      name_of(t), input ? "input" : "output", plural(asked.value, "byte"), size_list(allowed),
+                      label_of(t)));
       return fallback;
     }
     return asked.value;
@@ -329,8 +329,8 @@ class checker {
         add(diag_id::net_image_overflow, where,
             fmt::format("node '{}' needs {} {} {} at byte {}, past the {} (DWords 0-{}) of the {} {} slave "
                         "data area",
-                        n.name, pr.size, dir, noun(pr.size, "byte", "bytes"), pr.offset, plural(image.slave_bytes(), "byte"),
-                        image.slave_bytes() / 4 - 1, p.profile->name, dir));
+                        n.name, pr.size, dir, noun(pr.size, "byte", "bytes"), pr.offset,
+                        plural(image.slave_bytes(), "byte"), image.slave_bytes() / 4 - 1, p.profile->name, dir));
       }
     }
   }

@@ -2,8 +2,8 @@
 // `edsc net check`: a network file read, each node's EDS analysed, every rule
 // of docs/network.md applied, and the plan the map is drawn from.
 #include <array>
-#include <functional>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -52,10 +52,10 @@ struct plan {
 struct checked_network {
   std::unique_ptr<source_file> source;  // the network file
   std::optional<network_file> file;
-  diagnostics diags;                    // into the network file, after the policy
+  diagnostics diags;                     // into the network file, after the policy
   std::vector<file_report> eds_reports;  // each EDS with findings, located in it
-  std::optional<plan> result;           // absent when the file could not be planned
-  report_totals totals;                 // over all reports
+  std::optional<plan> result;            // absent when the file could not be planned
+  report_totals totals;                  // over all reports
   [[nodiscard]] bool has_errors() const { return totals.errors > 0; }
 };
 

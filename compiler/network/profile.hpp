@@ -10,10 +10,10 @@
 namespace edsc::network {
 
 struct image_profile {
-  const char* tag;              // "I" / "O": Local:<slot>:I
-  std::uint32_t words = 0;      // whole image, 16-bit words
+  const char* tag;                   // "I" / "O": Local:<slot>:I
+  std::uint32_t words = 0;           // whole image, 16-bit words
   std::uint32_t reserved_words = 0;  // status / command words before the slave data
-  const char* reserved_name;    // "status structure"
+  const char* reserved_name;         // "status structure"
   [[nodiscard]] std::uint32_t slave_bytes() const { return (words - reserved_words) * 2; }
 };
 

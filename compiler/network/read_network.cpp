@@ -47,8 +47,7 @@ class reader {
       read_string(*header, "kind", net.kind, true);
       if (net.kind.given && net.kind.value != "devicenet") {
         add(diag_id::net_kind_unsupported, net.kind.where,
-            fmt::format("network kind \"{}\" cannot be planned yet; edsc plans kind = \"devicenet\"",
-                        net.kind.value));
+            fmt::format("network kind \"{}\" cannot be planned yet; edsc plans kind = \"devicenet\"", net.kind.value));
         return std::move(out_);
       }
       read_network_table(*header, net);
@@ -228,8 +227,10 @@ class reader {
   }
 
   void read_connection(const toml::node& n, node& nd) {
-    static constexpr std::array<std::pair<std::string_view, conn_type>, 4> types{
-        {{"poll", conn_type::poll}, {"strobe", conn_type::strobe}, {"cos", conn_type::cos}, {"cyclic", conn_type::cyclic}}};
+    static constexpr std::array<std::pair<std::string_view, conn_type>, 4> types{{{"poll", conn_type::poll},
+                                                                                  {"strobe", conn_type::strobe},
+                                                                                  {"cos", conn_type::cos},
+                                                                                  {"cyclic", conn_type::cyclic}}};
     connection_plan c;
     c.where = region(n.source());
     if (const auto* s = n.as_string()) {
@@ -261,8 +262,9 @@ class reader {
   void read_identity(const toml::node& n, node& nd) {
     const auto* t = n.as_table();
     if (t == nullptr)
-      return add(diag_id::net_key_type, region(n.source()),
-                 "'identity' must be a table: { vendor = 1, device_type = 24, product_code = 5, major = 1, minor = 1 }");
+      return add(
+          diag_id::net_key_type, region(n.source()),
+          "'identity' must be a table: { vendor = 1, device_type = 24, product_code = 5, major = 1, minor = 1 }");
     expect_keys(*t, {"vendor", "device_type", "product_code", "major", "minor", "product"}, "identity");
     auto& id = nd.identity;
     read_uint(*t, "vendor", id.vendor, 0xFFFF);
@@ -276,9 +278,10 @@ class reader {
   void read_node(const toml::table& t) {
     node nd;
     nd.where = region(t.source());
-    expect_keys(t, {"mac", "name", "eds", "connections", "input", "output", "keying", "input_dword", "output_dword",
-                    "identity"},
-                "[[node]]");
+    expect_keys(
+        t,
+        {"mac", "name", "eds", "connections", "input", "output", "keying", "input_dword", "output_dword", "identity"},
+        "[[node]]");
     read_mac(t, nd.mac, "[[node]]");
     read_string(t, "name", nd.name, true, "[[node]]");
     read_string(t, "eds", nd.eds, false);
@@ -312,8 +315,7 @@ class reader {
     const auto* n = root.get("node");
     if (n == nullptr) return;
     const auto* a = n->as_array();
-    if (a == nullptr)
-      return add(diag_id::net_key_type, region(n->source()), "nodes are an array of tables: [[node]]");
+    if (a == nullptr) return add(diag_id::net_key_type, region(n->source()), "nodes are an array of tables: [[node]]");
     for (const auto& e : *a) {
       if (const auto* t = e.as_table())
         read_node(*t);

@@ -85,8 +85,8 @@ int image_svg(const plan& p, const image_layout& image, int top, std::string& ou
     const auto& n = p.nodes[b.node];
     const auto* colour = palette[b.node % palette.size()];
     const auto at = place_of(p, image, b);
-    const auto title = fmt::format("MAC {} {}: {} {} {}-{}, {}", n.mac, n.name, label_of(b.type), plural(b.size, "byte"),
-                                   b.offset, b.end() - 1, at.tag);
+    const auto title = fmt::format("MAC {} {}: {} {} {}-{}, {}", n.mac, n.name, label_of(b.type),
+                                   plural(b.size, "byte"), b.offset, b.end() - 1, at.tag);
     bool labelled = false;
     for (std::uint32_t byte = b.offset; byte < b.end();) {
       const auto row = byte / bytes_per_row;

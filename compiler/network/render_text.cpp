@@ -15,7 +15,9 @@ const image_profile& profile_of(const plan& p, const image_layout& image) {
   return image.input ? p.profile->input : p.profile->output;
 }
 
-std::string word_range(std::uint32_t a, std::uint32_t b) { return a == b ? std::to_string(a) : fmt::format("{}-{}", a, b); }
+std::string word_range(std::uint32_t a, std::uint32_t b) {
+  return a == b ? std::to_string(a) : fmt::format("{}-{}", a, b);
+}
 
 void text_image(const plan& p, const image_layout& image, std::string& out) {
   const auto& ip = profile_of(p, image);
@@ -57,13 +59,15 @@ block_place place_of(const plan& p, const image_layout& image, const block& b) {
 
 std::string render_map_text(const map_input& m) {
   const auto& p = m.p;
-  std::string out = fmt::format("network {}: {} scanner at MAC {}, slot {}; {}; alignment {}, start DWord {} "
-                                "(input) and {} (output)\n\n",
-                                p.name, p.profile->name, p.scanner_mac, p.slot, plural(p.nodes.size(), "node"), name_of(p.align),
-                                p.input_start, p.output_start);
+  std::string out = fmt::format(
+      "network {}: {} scanner at MAC {}, slot {}; {}; alignment {}, start DWord {} "
+      "(input) and {} (output)\n\n",
+      p.name, p.profile->name, p.scanner_mac, p.slot, plural(p.nodes.size(), "node"), name_of(p.align), p.input_start,
+      p.output_start);
   text_image(p, m.l.input, out);
   text_image(p, m.l.output, out);
-  out += fmt::format("  {:>3}  {:<24}  {:<10}  {}\n", "MAC", "node", "keying", "identity (vendor/type/code/revision) and product");
+  out += fmt::format("  {:>3}  {:<24}  {:<10}  {}\n", "MAC", "node", "keying",
+                     "identity (vendor/type/code/revision) and product");
   for (const auto& n : p.nodes) {
     std::string id = "(not stated)";
     if (n.identity)
@@ -86,11 +90,16 @@ std::string render_map_json(const map_input& m) {
   out["alignment"] = name_of(p.align);
   json nodes = json::array();
   for (const auto& n : p.nodes) {
-    json j{{"mac", n.mac}, {"name", n.name}, {"product", n.product}, {"eds", n.has_eds ? json(n.eds) : json(nullptr)},
+    json j{{"mac", n.mac},
+           {"name", n.name},
+           {"product", n.product},
+           {"eds", n.has_eds ? json(n.eds) : json(nullptr)},
            {"keying", name_of(n.key)}};
     if (n.identity)
-      j["identity"] = {{"vendor", n.identity->vendor},         {"device_type", n.identity->device_type},
-                       {"product_code", n.identity->product_code}, {"major", n.identity->major},
+      j["identity"] = {{"vendor", n.identity->vendor},
+                       {"device_type", n.identity->device_type},
+                       {"product_code", n.identity->product_code},
+                       {"major", n.identity->major},
                        {"minor", n.identity->minor}};
     else
       j["identity"] = nullptr;

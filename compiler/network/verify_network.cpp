@@ -103,22 +103,31 @@ class verifier {
       const unsigned got = x.data[0] | (x.data[1] << 8);
       std::string what;
       switch (x.attr) {
-        case 1: if (got != id.vendor) what = fmt::format("vendor ID {} where the network expects {}", got, id.vendor); break;
-        case 2: if (got != id.device_type) what = fmt::format("device type {} where the network expects {}", got, id.device_type); break;
-        case 3: if (got != id.product_code) what = fmt::format("product code {} where the network expects {}", got, id.product_code); break;
+        case 1:
+          if (got != id.vendor) what = fmt::format("vendor ID {} where the network expects {}", got, id.vendor);
+          break;
+        case 2:
+          if (got != id.device_type)
+            what = fmt::format("device type {} where the network expects {}", got, id.device_type);
+          break;
+        case 3:
+          if (got != id.product_code)
+            what = fmt::format("product code {} where the network expects {}", got, id.product_code);
+          break;
         case 4:
           if (x.data[0] != id.major || (n.key == keying::exact && x.data[1] != id.minor))
-            what = fmt::format("revision {}.{} where the network expects {}.{}", x.data[0], x.data[1], id.major, id.minor);
+            what =
+                fmt::format("revision {}.{} where the network expects {}.{}", x.data[0], x.data[1], id.major, id.minor);
           break;
         default: break;
       }
       if (what.empty()) continue;
       nv.state = node_state::mismatch;
       nv.detail = what;
-      v_.capture_diags.push_back(make_diagnostic(
-          diag_id::verify_net_identity, log_.frames[*x.answer].where,
-          fmt::format("node '{}' (MAC {}) answers {}; with {} keying the scanner shows it as Mismatch", n.name, n.mac,
-                      what, name_of(n.key))));
+      v_.capture_diags.push_back(
+          make_diagnostic(diag_id::verify_net_identity, log_.frames[*x.answer].where,
+                          fmt::format("node '{}' (MAC {}) answers {}; with {} keying the scanner shows it as Mismatch",
+                                      n.name, n.mac, what, name_of(n.key))));
     }
     return read;
   }
@@ -174,7 +183,7 @@ std::string render_verdict_table(const network_verdict& v) {
   for (const auto& n : v.nodes) w = std::max(w, n.name.size());
   std::string out = fmt::format("  {:>3}  {:<{}}  {:<9}  {:<22}  {}\n", "MAC", "node", w, "state", "I/O frames", "why");
   for (const auto& n : v.nodes) {
-    const auto io = n.io_frames == 0   ? std::string("none")
+    const auto io = n.io_frames == 0  ? std::string("none")
                     : n.io_wrong == 0 ? fmt::format("{}, lengths agree", n.io_frames)
                                       : fmt::format("{}, {} of wrong length", n.io_frames, n.io_wrong);
     out += fmt::format("  {:>3}  {:<{}}  {:<9}  {:<22}  {}\n", n.mac, n.name.empty() ? "?" : n.name, w,

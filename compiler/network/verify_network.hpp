@@ -22,11 +22,11 @@ struct node_verdict {
 };
 
 struct network_verdict {
-  diagnostics capture_diags;  // located in the capture
-  diagnostics network_diags;  // located in the network file (nodes never heard)
+  diagnostics capture_diags;        // located in the capture
+  diagnostics network_diags;        // located in the network file (nodes never heard)
   std::vector<node_verdict> nodes;  // the plan's nodes, then Unknown ones, by MAC
-  bool startup = false;       // the capture holds explicit messages (a start-up)
-  std::string proves;         // what the capture can and cannot prove
+  bool startup = false;             // the capture holds explicit messages (a start-up)
+  std::string proves;               // what the capture can and cannot prove
 };
 
 [[nodiscard]] network_verdict verify_network(const plan& p, const verify::can_log& log,

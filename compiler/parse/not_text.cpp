@@ -41,7 +41,10 @@ struct magic {
 // Formats a user may pass by mistake: a build's output, an archive of EDS
 // files, a document or an icon instead of the text.
 constexpr std::array<magic, 7> binary_magics{{
-    {std::string_view("\x7F" "ELF", 4), "an ELF executable or library"},
+    {std::string_view("\x7F"
+                      "ELF",
+                      4),
+     "an ELF executable or library"},
     {std::string_view("PK\x03\x04", 4), "a ZIP archive (unpack it and check the .eds files inside)"},
     {std::string_view("\x1F\x8B", 2), "a gzip archive (unpack it first)"},
     {std::string_view("MZ", 2), "a Windows executable"},

@@ -25,27 +25,50 @@ struct state {
 };
 
 // Each action forwards one grammar event to the builder.
-template <typename Rule> struct action : pg::nothing<Rule> {};
+template <typename Rule>
+struct action : pg::nothing<Rule> {};
 
-#define EDSC_TOKEN_ACTION(rule, call)                                    \
-  template <> struct action<g::rule> {                                   \
-    template <typename ActionInput>                                      \
-    static void apply(const ActionInput& in, state& st) { st.b.call(st.where(in)); } \
+#define EDSC_TOKEN_ACTION(rule, call)                     \
+  template <>                                             \
+  struct action<g::rule> {                                \
+    template <typename ActionInput>                       \
+    static void apply(const ActionInput& in, state& st) { \
+      st.b.call(st.where(in));                            \
+    }                                                     \
   };
-#define EDSC_MARKER_ACTION(rule, call) \
-  template <> struct action<g::rule> { static void apply0(state& st) { st.b.call(); } };
+#define EDSC_MARKER_ACTION(rule, call)             \
+  template <>                                      \
+  struct action<g::rule> {                         \
+    static void apply0(state& st) { st.b.call(); } \
+  };
 
-template <> struct action<g::blank> {
-  template <typename I> static void apply(const I& in, state& st) { st.b.trivia(cst::token_kind::blank, st.where(in)); }
+template <>
+struct action<g::blank> {
+  template <typename I>
+  static void apply(const I& in, state& st) {
+    st.b.trivia(cst::token_kind::blank, st.where(in));
+  }
 };
-template <> struct action<g::newline> {
-  template <typename I> static void apply(const I& in, state& st) { st.b.trivia(cst::token_kind::newline, st.where(in)); }
+template <>
+struct action<g::newline> {
+  template <typename I>
+  static void apply(const I& in, state& st) {
+    st.b.trivia(cst::token_kind::newline, st.where(in));
+  }
 };
-template <> struct action<g::comment> {
-  template <typename I> static void apply(const I& in, state& st) { st.b.trivia(cst::token_kind::comment, st.where(in)); }
+template <>
+struct action<g::comment> {
+  template <typename I>
+  static void apply(const I& in, state& st) {
+    st.b.trivia(cst::token_kind::comment, st.where(in));
+  }
 };
-template <> struct action<g::bom> {
-  template <typename I> static void apply(const I& in, state& st) { st.b.trivia(cst::token_kind::bom, st.where(in)); }
+template <>
+struct action<g::bom> {
+  template <typename I>
+  static void apply(const I& in, state& st) {
+    st.b.trivia(cst::token_kind::bom, st.where(in));
+  }
 };
 
 EDSC_TOKEN_ACTION(lbracket, lbracket)
@@ -94,9 +117,8 @@ parse_result parse(const source_file& src) {
     pg::parse<g::file, action>(in, st);
   } catch (const cst::stop_parsing&) {
     stopped_at = b.consumed();
-    result.diags.push_back(make_diagnostic(
-        diag_id::syntax_too_many_errors, {stopped_at, stopped_at},
-        "too many syntax errors; the rest of the file was not parsed"));
+    result.diags.push_back(make_diagnostic(diag_id::syntax_too_many_errors, {stopped_at, stopped_at},
+                                           "too many syntax errors; the rest of the file was not parsed"));
   }
   // The grammar matches every input to its end; only the error limit stops it.
   result.tree = b.finish({stopped_at, src.size()});

@@ -6,7 +6,7 @@ namespace edsc {
 
 struct parse_result {
   cst::tree tree;
-  diagnostics diags;  // syntax diagnostics, in source order
+  diagnostics diags;      // syntax diagnostics, in source order
   bool not_text = false;  // the input is not EDS text: one input diagnostic, an empty tree
 };
 

@@ -60,11 +60,21 @@ struct legacy_row {
 // §4.2: 1,2,3,5,6,8,9,11,23,24,25 are confirmed; the rest follows the
 // obvious order of the old Parameter Object table and is a guess.
 constexpr std::array<legacy_row, 15> legacy{{
-    {1, code::WORD, true},   {2, code::UINT, true},  {3, code::INT, true},
-    {4, code::BOOL, false},  {5, code::SINT, true},  {6, code::DINT, true},
-    {7, code::LINT, false},  {8, code::USINT, true}, {9, code::UDINT, true},
-    {10, code::ULINT, false}, {11, code::REAL, true}, {12, code::LREAL, false},
-    {23, code::SHORT_STRING, true}, {24, code::BYTE, true}, {25, code::DWORD, true},
+    {1, code::WORD, true},
+    {2, code::UINT, true},
+    {3, code::INT, true},
+    {4, code::BOOL, false},
+    {5, code::SINT, true},
+    {6, code::DINT, true},
+    {7, code::LINT, false},
+    {8, code::USINT, true},
+    {9, code::UDINT, true},
+    {10, code::ULINT, false},
+    {11, code::REAL, true},
+    {12, code::LREAL, false},
+    {23, code::SHORT_STRING, true},
+    {24, code::BYTE, true},
+    {25, code::DWORD, true},
 }};
 
 }  // namespace

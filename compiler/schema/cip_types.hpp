@@ -47,11 +47,10 @@ struct legacy_mapping {
 
 // Shorthand for the handful of codes the schema tables name.
 namespace code {
-inline constexpr std::uint8_t BOOL = 0xC1, SINT = 0xC2, INT = 0xC3, DINT = 0xC4, LINT = 0xC5,
-                              USINT = 0xC6, UINT = 0xC7, UDINT = 0xC8, ULINT = 0xC9,
-                              REAL = 0xCA, LREAL = 0xCB, STRING = 0xD0, BYTE = 0xD1,
-                              WORD = 0xD2, DWORD = 0xD3, LWORD = 0xD4, SHORT_STRING = 0xDA,
-                              EPATH = 0xDC, STRINGI = 0xDE;
+inline constexpr std::uint8_t BOOL = 0xC1, SINT = 0xC2, INT = 0xC3, DINT = 0xC4, LINT = 0xC5, USINT = 0xC6, UINT = 0xC7,
+                              UDINT = 0xC8, ULINT = 0xC9, REAL = 0xCA, LREAL = 0xCB, STRING = 0xD0, BYTE = 0xD1,
+                              WORD = 0xD2, DWORD = 0xD3, LWORD = 0xD4, SHORT_STRING = 0xDA, EPATH = 0xDC,
+                              STRINGI = 0xDE;
 }
 
 }  // namespace edsc::schema

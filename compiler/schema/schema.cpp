@@ -66,13 +66,13 @@ const section_desc sections[] = {
 const section_desc vendor_object_class{"ClassN_VendorM", sf::object_class, 0, none, true};
 
 constexpr std::array<std::string_view, static_cast<std::size_t>(ref_kind::count_)> stems{
-    "Param", "ProxyParam", "ProxiedParam", "ConstructedParam", "Enum", "Assem", "AssemExa",
-    "ProxyAssem", "ProxiedAssem", "ProxyAssemExa", "ProxiedAssemExa", "Variant", "VariantExa",
-    "BitStringVariant", "Array", "Connection", "Group", "Input", "Output", "ProxyEnum",
-    "ProxiedEnum", "ProxyConnect", "ProxiedConnect"};
+    "Param",           "ProxyParam",   "ProxiedParam",  "ConstructedParam", "Enum",
+    "Assem",           "AssemExa",     "ProxyAssem",    "ProxiedAssem",     "ProxyAssemExa",
+    "ProxiedAssemExa", "Variant",      "VariantExa",    "BitStringVariant", "Array",
+    "Connection",      "Group",        "Input",         "Output",           "ProxyEnum",
+    "ProxiedEnum",     "ProxyConnect", "ProxiedConnect"};
 
-const keyword_desc* match_in(std::span<const keyword_desc> list, std::string_view kw,
-                             split_keyword parts) {
+const keyword_desc* match_in(std::span<const keyword_desc> list, std::string_view kw, split_keyword parts) {
   for (const auto& k : list) {
     if (k.numbered) {
       if (!parts.digits.empty() && iequals(k.stem, parts.stem)) return &k;
@@ -110,8 +110,7 @@ const section_desc* find_section(std::string_view name) {
     const auto us = name.find('_');
     if (us != std::string_view::npos && us > 5 && iequals(name.substr(us + 1, 6), "Vendor")) {
       std::uint32_t n = 0;
-      if (parse_u32(name.substr(5, us - 5), n) && parse_u32(name.substr(us + 7), n))
-        return &vendor_object_class;
+      if (parse_u32(name.substr(5, us - 5), n) && parse_u32(name.substr(us + 7), n)) return &vendor_object_class;
     }
   }
   return nullptr;

@@ -14,8 +14,8 @@ namespace c = code;
 namespace {
 constexpr std::string_view exclude_words[] = {"NONE", "WRITE", "READ_WRITE"};
 constexpr std::string_view network_words[] = {
-    "CompoNet", "ControlNet", "DeviceNet", "EtherNetIP", "EtherNetIP_In_Cabinet",
-    "EtherNetIP_UDP_Only", "ModbusSL", "ModbusTCP", "Safety", "HART", "IOLink"};
+    "CompoNet",  "ControlNet", "DeviceNet", "EtherNetIP", "EtherNetIP_In_Cabinet", "EtherNetIP_UDP_Only", "ModbusSL",
+    "ModbusTCP", "Safety",     "HART",      "IOLink"};
 
 constexpr field_desc f_desc_text[] = {{"text", vt::string, 0, true}};
 constexpr field_desc f_date[] = {{"date", vt::date, 0, true}};
@@ -28,7 +28,8 @@ constexpr field_desc f_uint[] = {{"value", vt::integer, c::UINT, true}};
 constexpr field_desc f_usint[] = {{"value", vt::integer, c::USINT, true}};
 constexpr field_desc f_word[] = {{"value", vt::integer, c::WORD, true}};
 constexpr field_desc f_class[] = {{"network", vt::keyword, 0, true, 0, network_words}};
-constexpr field_desc f_cfg_assembly[] = {{"instance", vt::number_ref, c::UINT, true, bit(rk::assem) | bit(rk::assem_exa)}};
+constexpr field_desc f_cfg_assembly[] = {
+    {"instance", vt::number_ref, c::UINT, true, bit(rk::assem) | bit(rk::assem_exa)}};
 
 constexpr field_desc f_io_info[] = {
     {"mask", vt::integer, c::WORD, true},
@@ -101,14 +102,10 @@ constexpr field_desc f_group_tail[] = {{"member", vt::number_ref, c::UINT, true,
 }  // namespace
 
 const keyword_desc file_keywords[9] = {
-    {"DescText", false, entry_id::desc_text, f_desc_text},
-    {"CreateDate", false, entry_id::create_date, f_date},
-    {"CreateTime", false, entry_id::create_time, f_time},
-    {"ModDate", false, entry_id::mod_date, f_date},
-    {"ModTime", false, entry_id::mod_time, f_time},
-    {"Revision", false, entry_id::file_revision, f_revision},
-    {"HomeURL", false, entry_id::home_url, f_string},
-    {"Exclude", false, entry_id::exclude, f_exclude},
+    {"DescText", false, entry_id::desc_text, f_desc_text}, {"CreateDate", false, entry_id::create_date, f_date},
+    {"CreateTime", false, entry_id::create_time, f_time},  {"ModDate", false, entry_id::mod_date, f_date},
+    {"ModTime", false, entry_id::mod_time, f_time},        {"Revision", false, entry_id::file_revision, f_revision},
+    {"HomeURL", false, entry_id::home_url, f_string},      {"Exclude", false, entry_id::exclude, f_exclude},
     {"EDSFileCRC", false, entry_id::eds_file_crc, f_crc},
 };
 
@@ -132,14 +129,10 @@ const keyword_desc classification_keywords[1] = {
 };
 
 const keyword_desc io_info_keywords[9] = {
-    {"Default", false, entry_id::io_default, f_word},
-    {"PollInfo", false, entry_id::poll_info, f_io_info},
-    {"StrobeInfo", false, entry_id::strobe_info, f_io_info},
-    {"COSInfo", false, entry_id::cos_info, f_io_info},
-    {"CyclicInfo", false, entry_id::cyclic_info, f_io_info},
-    {"Input", true, entry_id::input_n, f_io_data},
-    {"Output", true, entry_id::output_n, f_io_data},
-    {"InputExa", true, entry_id::input_exa_n, f_io_exa},
+    {"Default", false, entry_id::io_default, f_word},        {"PollInfo", false, entry_id::poll_info, f_io_info},
+    {"StrobeInfo", false, entry_id::strobe_info, f_io_info}, {"COSInfo", false, entry_id::cos_info, f_io_info},
+    {"CyclicInfo", false, entry_id::cyclic_info, f_io_info}, {"Input", true, entry_id::input_n, f_io_data},
+    {"Output", true, entry_id::output_n, f_io_data},         {"InputExa", true, entry_id::input_exa_n, f_io_exa},
     {"OutputExa", true, entry_id::output_exa_n, f_io_exa},
 };
 

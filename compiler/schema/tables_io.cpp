@@ -16,13 +16,12 @@ constexpr std::string_view yes_no[] = {"Yes", "No"};
 constexpr std::string_view tspec_words[] = {"Tx", "Rx", "TxRx"};
 constexpr std::string_view port_words[] = {"TCP", "DeviceNet", "ControlNet", "CompoNet", "EtherNetIP"};
 
-constexpr ref_mask any_param = bit(rk::param) | bit(rk::proxy_param) | bit(rk::proxied_param) |
-                               bit(rk::constructed_param);
-constexpr ref_mask any_assem = bit(rk::assem) | bit(rk::assem_exa) | bit(rk::proxy_assem) |
-                               bit(rk::proxied_assem) | bit(rk::proxy_assem_exa) |
-                               bit(rk::proxied_assem_exa);
-constexpr ref_mask any_layout = any_param | any_assem | bit(rk::variant) | bit(rk::variant_exa) |
-                                bit(rk::bitstring_variant) | bit(rk::array);
+constexpr ref_mask any_param =
+    bit(rk::param) | bit(rk::proxy_param) | bit(rk::proxied_param) | bit(rk::constructed_param);
+constexpr ref_mask any_assem = bit(rk::assem) | bit(rk::assem_exa) | bit(rk::proxy_assem) | bit(rk::proxied_assem) |
+                               bit(rk::proxy_assem_exa) | bit(rk::proxied_assem_exa);
+constexpr ref_mask any_layout =
+    any_param | any_assem | bit(rk::variant) | bit(rk::variant_exa) | bit(rk::bitstring_variant) | bit(rk::array);
 
 constexpr field_desc f_assem[] = {
     {"name", vt::string, 0, false},
@@ -37,12 +36,9 @@ constexpr field_desc f_assem_tail[] = {
     {"member", vt::member, c::UDINT, false, any_layout},
 };
 constexpr field_desc f_variant[] = {
-    {"name", vt::string, 0, false},
-    {"help", vt::string, 0, false},
-    {"reserved1", vt::any, 0, false},
-    {"reserved2", vt::any, 0, false},
-    {"reserved3", vt::any, 0, false},
-    {"selector", vt::reference, 0, true, any_param | any_assem},
+    {"name", vt::string, 0, false},   {"help", vt::string, 0, false},
+    {"reserved1", vt::any, 0, false}, {"reserved2", vt::any, 0, false},
+    {"reserved3", vt::any, 0, false}, {"selector", vt::reference, 0, true, any_param | any_assem},
 };
 constexpr field_desc f_variant_tail[] = {
     {"selection", vt::integer, c::UDINT, true},
@@ -136,11 +132,8 @@ constexpr field_desc f_service_tail[] = {{"service", vt::any, 0, true}};
 constexpr field_desc f_qct[] = {{"ready_time", vt::integer, c::UINT, true},
                                 {"accumulated_time", vt::integer, c::UINT, true}};
 constexpr field_desc f_service_description[] = {
-    {"service", vt::integer, c::USINT, true},
-    {"name", vt::string, 0, false},
-    {"path", vt::epath, 0, false},
-    {"request", vt::any, 0, false},
-    {"response", vt::any, 0, false},
+    {"service", vt::integer, c::USINT, true}, {"name", vt::string, 0, false},  {"path", vt::epath, 0, false},
+    {"request", vt::any, 0, false},           {"response", vt::any, 0, false},
 };
 }  // namespace
 

@@ -30,8 +30,9 @@ bytes refuse(state& s, const cip::request& q, const cip::forward_open_request& f
                         "\"status\":\"0x{:02X}\",\"extended\":\"0x{:04X}\",\"why\":{}",
                         fo.connection_serial, fo.originator_vendor, fo.originator_serial, connection,
                         cip::code(general::connection_failure), cip::code(r.status), nlohmann::json(r.why).dump()));
-  return cip::encode_reply(q.service, general::connection_failure, add,
-                           cip::connection_triple_data(fo.connection_serial, fo.originator_vendor, fo.originator_serial));
+  return cip::encode_reply(
+      q.service, general::connection_failure, add,
+      cip::connection_triple_data(fo.connection_serial, fo.originator_vendor, fo.originator_serial));
 }
 
 std::string triple(const cip::forward_open_request& fo) {
@@ -75,10 +76,13 @@ std::optional<refusal> open_explicit(state& s, const cip::forward_open_request& 
   router_instance.value = 1;
   const std::vector<cip::path_segment> router{router_class, router_instance};
   if (sp.app != router)
-    return refusal{ext::inconsistent_path_combination, {},
-                   "a class 3 connection goes to the Message Router (class 2, instance 1), not to " + path_words(sp.app)};
+    return refusal{
+        ext::inconsistent_path_combination,
+        {},
+        "a class 3 connection goes to the Message Router (class 2, instance 1), not to " + path_words(sp.app)};
   if (s.connections.size() >= s.max_connections)
-    return refusal{ext::out_of_connections, {},
+    return refusal{ext::out_of_connections,
+                   {},
                    fmt::format("{} connections are open, the most the simulator holds", s.connections.size())};
   oc.ot_id = s.next_connection_id++;
   oc.to_id = fo.to_connection_id != 0 ? fo.to_connection_id : s.next_connection_id++;
@@ -92,16 +96,18 @@ void take_config(state& s, const connection_point& p, std::optional<cip::byte_vi
   if (!config || p.plan.facts.config_instance == 0) return;
   auto* a = s.dev.assembly(p.plan.facts.config_instance);
   if (a == nullptr) return;
-  a->data.assign(config->begin(), config->begin() + static_cast<std::ptrdiff_t>(std::min(config->size(), a->data.size())));
+  a->data.assign(config->begin(),
+                 config->begin() + static_cast<std::ptrdiff_t>(std::min(config->size(), a->data.size())));
   a->data.resize(p.plan.facts.config_size, 0);
-  log_event(s, "config", fmt::format("\"instance\":{},\"by\":\"Forward_Open\",\"data\":\"{}\"", a->instance, hex(a->data)));
+  log_event(s, "config",
+            fmt::format("\"instance\":{},\"by\":\"Forward_Open\",\"data\":\"{}\"", a->instance, hex(a->data)));
 }
 
 // Class 1 I/O: the first ConnectionN of the same application path that
 // accepts the request; else the refusal of the first that had the path.
 // `refused_number` is the ConnectionN a refusal was held against.
-std::optional<refusal> open_io(state& s, const cip::forward_open_request& fo, const split_path& sp,
-                               open_connection& oc, clock::time_point now, std::uint32_t& refused_number) {
+std::optional<refusal> open_io(state& s, const cip::forward_open_request& fo, const split_path& sp, open_connection& oc,
+                               clock::time_point now, std::uint32_t& refused_number) {
   std::optional<refusal> first;
   std::optional<std::size_t> chosen;
   for (std::size_t i = 0; i < s.dev.points.size() && !chosen; ++i) {
@@ -115,13 +121,15 @@ std::optional<refusal> open_io(state& s, const cip::forward_open_request& fo, co
   }
   if (!chosen)
     return first ? first
-                 : refusal{ext::inconsistent_path_combination, {}, "no ConnectionN has the application path " + path_words(sp.app)};
+                 : refusal{ext::inconsistent_path_combination,
+                           {},
+                           "no ConnectionN has the application path " + path_words(sp.app)};
   oc.point = chosen;
   oc.consumes = fo.ot.type != cip::conn_type::null;
   oc.produces = fo.to.type != cip::conn_type::null;
   oc.ot_id = s.next_connection_id++;
   oc.to_id = fo.to.type == cip::conn_type::point_to_point && fo.to_connection_id != 0 ? fo.to_connection_id
-                                                                                       : s.next_connection_id++;
+                                                                                      : s.next_connection_id++;
   oc.timeout = timeout_of(fo, oc.consumes ? fo.ot_rpi_us : fo.to_rpi_us);
   oc.expires = now + oc.timeout;
   oc.next_produce = now;
@@ -139,11 +147,13 @@ bytes accept(state& s, const cip::request& q, const cip::forward_open_request& f
   rep.originator_serial = fo.originator_serial;
   rep.ot_api_us = fo.ot_rpi_us;
   rep.to_api_us = fo.to_rpi_us;
-  log_event(s, "open",
-            fmt::format("{},\"connection\":{},\"class\":{},\"ot_rpi_us\":{},\"to_rpi_us\":{}", triple(fo),
-                        oc.point ? s.dev.points[*oc.point].number : 0, fo.transport & 0x0F, fo.ot_rpi_us, fo.to_rpi_us));
+  log_event(
+      s, "open",
+      fmt::format("{},\"connection\":{},\"class\":{},\"ot_rpi_us\":{},\"to_rpi_us\":{}", triple(fo),
+                  oc.point ? s.dev.points[*oc.point].number : 0, fo.transport & 0x0F, fo.ot_rpi_us, fo.to_rpi_us));
   s.connections.push_back(oc);
-  return cip::encode_reply(q.service, general::success, {}, cip::forward_open_ok_data(rep).value());  // no application reply: fits
+  return cip::encode_reply(q.service, general::success, {},
+                           cip::forward_open_ok_data(rep).value());  // no application reply: fits
 }
 
 bytes forward_open(state& s, const link& l, const cip::request& q, clock::time_point now) {
@@ -160,7 +170,8 @@ bytes forward_open(state& s, const link& l, const cip::request& q, clock::time_p
     if (o.serial == fo.connection_serial && o.vendor == fo.originator_vendor &&
         o.originator_serial == fo.originator_serial)
       return refuse(s, q, fo,
-                    {ext::connection_in_use, {},
+                    {ext::connection_in_use,
+                     {},
                      fmt::format("a connection of serial {}, originator vendor {} and serial {} is already open",
                                  fo.connection_serial, fo.originator_vendor, fo.originator_serial)});
   split_path sp;
@@ -168,7 +179,8 @@ bytes forward_open(state& s, const link& l, const cip::request& q, clock::time_p
   const unsigned transport_class = fo.transport & 0x0F;
   if (transport_class != 1 && transport_class != 3)
     return refuse(s, q, fo,
-                  {ext::transport_class_not_supported, {},
+                  {ext::transport_class_not_supported,
+                   {},
                    fmt::format("transport class {} asked; the simulator serves classes 1 and 3", transport_class)});
   open_connection oc;
   oc.serial = fo.connection_serial;
@@ -193,15 +205,19 @@ bytes forward_close(state& s, const cip::request& q) {
   });
   if (it == s.connections.end()) {
     const std::uint16_t add[] = {cip::code(ext::connection_not_found)};
-    return cip::encode_reply(q.service, general::connection_failure, add,
-                             cip::connection_triple_data(fc.connection_serial, fc.originator_vendor, fc.originator_serial));
+    return cip::encode_reply(
+        q.service, general::connection_failure, add,
+        cip::connection_triple_data(fc.connection_serial, fc.originator_vendor, fc.originator_serial));
   }
-  log_event(s, "close", fmt::format("\"serial\":{},\"originator_vendor\":{},\"originator_serial\":{},\"produced\":{},\"consumed\":{}",
-                                    fc.connection_serial, fc.originator_vendor, fc.originator_serial, it->produced,
-                                    it->consumed));
+  log_event(
+      s, "close",
+      fmt::format("\"serial\":{},\"originator_vendor\":{},\"originator_serial\":{},\"produced\":{},\"consumed\":{}",
+                  fc.connection_serial, fc.originator_vendor, fc.originator_serial, it->produced, it->consumed));
   s.connections.erase(it);
   close_orphans(s);
-  return cip::encode_reply(q.service, general::success, {}, cip::connection_triple_data(fc.connection_serial, fc.originator_vendor, fc.originator_serial));
+  return cip::encode_reply(
+      q.service, general::success, {},
+      cip::connection_triple_data(fc.connection_serial, fc.originator_vendor, fc.originator_serial));
 }
 
 }  // namespace

@@ -8,7 +8,9 @@ namespace edsc::sim {
 
 namespace {
 
-std::uint32_t number_or_zero(const model::value& v) { return v.is_integer() ? static_cast<std::uint32_t>(v.as_uint()) : 0; }
+std::uint32_t number_or_zero(const model::value& v) {
+  return v.is_integer() ? static_cast<std::uint32_t>(v.as_uint()) : 0;
+}
 
 void put_le(cip::bytes& b, std::uint64_t v, std::size_t n) {
   b.clear();
@@ -137,7 +139,8 @@ device build_device(const model::device& dev, std::uint32_t serial) {
   device d;
   d.id = identity_of(dev.identity, serial);
   add_points(dev, d);
-  for (const auto& t : connections::plan_assemblies(dev)) add_assembly(d, t.instance, t.eds_size.value_or(0), assembly_role::other);
+  for (const auto& t : connections::plan_assemblies(dev))
+    add_assembly(d, t.instance, t.eds_size.value_or(0), assembly_role::other);
   std::sort(d.assemblies.begin(), d.assemblies.end(),
             [](const auto& a, const auto& b) { return a.instance < b.instance; });
   add_parameters(dev, d);

@@ -21,8 +21,8 @@ enum class assembly_role : std::uint8_t { input, output, config, other };
 // A member of an AssemN that names a ParamN: what `--inputs` and the
 // control on standard input set by name (inputs.cpp).
 struct input_field {
-  std::string name;         // the parameter's name, as the EDS writes it
-  std::uint32_t param = 0;  // N of ParamN, also accepted as a name ("Param3")
+  std::string name;                 // the parameter's name, as the EDS writes it
+  std::uint32_t param = 0;          // N of ParamN, also accepted as a name ("Param3")
   std::uint32_t bit = 0, bits = 0;  // where in the data, from the member sizes before it
   bool is_signed = false, is_real = false;
 };
@@ -30,8 +30,8 @@ struct input_field {
 struct assembly_instance {
   std::uint32_t instance = 0;
   assembly_role role = assembly_role::other;
-  cip::bytes data;  // its size is the EDS's
-  bool fixed = false;  // input data given by --inputs: the counter pattern leaves it alone
+  cip::bytes data;               // its size is the EDS's
+  bool fixed = false;            // input data given by --inputs: the counter pattern leaves it alone
   std::uint32_t eds_number = 0;  // N of the AssemN describing it, 0 when none does
   std::vector<input_field> fields;
 };
@@ -51,8 +51,8 @@ struct rpi_limits {
 struct connection_point {
   std::uint32_t number = 0;  // N of ConnectionN
   connections::connection_plan plan;
-  cip::bytes app_path;                      // owns what `segments` views
-  std::vector<cip::path_segment> segments;  // the application path, widths forgotten
+  cip::bytes app_path;                                      // owns what `segments` views
+  std::vector<cip::path_segment> segments;                  // the application path, widths forgotten
   model::app_type kind = model::app_type::exclusive_owner;  // as the plan classifies it
   rpi_limits ot_rpi, to_rpi;
 };
@@ -72,8 +72,8 @@ struct parameter_instance {
   cip::bytes value, min, max, def, link_path;
   std::vector<cip::bytes> allowed;  // enumerated with an EnumN: its values; else empty (min..max)
   std::uint16_t multiplier = 1, divisor = 1, base = 1, offset = 0;  // attributes 13-16 (offset an INT)
-  std::uint16_t links[4] = {0, 0, 0, 0};                             // attributes 17-20
-  std::uint8_t precision = 0;                                        // attribute 21
+  std::uint16_t links[4] = {0, 0, 0, 0};                            // attributes 17-20
+  std::uint8_t precision = 0;                                       // attribute 21
 };
 
 // The EDS itself, served by the File object (class 0x37, instance 0xC8).

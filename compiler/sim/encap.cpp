@@ -27,8 +27,10 @@ cip::bytes error_reply(const cip::encap_header& h, status code) {
 encap_outcome reply_with(state& s, const cip::encap_header& h, std::uint32_t session, status st, cip::byte_view data) {
   encap_outcome out;
   auto r = cip::encode_encap_reply(command_of(h), session, st, h.context, data);
-  if (r) out.reply = std::move(r).value();
-  else log_too_large(s, "encapsulation reply", r.error());
+  if (r)
+    out.reply = std::move(r).value();
+  else
+    log_too_large(s, "encapsulation reply", r.error());
   return out;
 }
 
@@ -60,8 +62,7 @@ encap_outcome unit_data(state& s, const link& l, const cip::encap_header& h, cip
                    [&](cip::byte_view a) { return cip::send_unit_data(c->to_id, u->sequence, a); });
 }
 
-encap_outcome rr_data(state& s, const link& l, const cip::encap_header& h, cip::byte_view data,
-                      clock::time_point now) {
+encap_outcome rr_data(state& s, const link& l, const cip::encap_header& h, cip::byte_view data, clock::time_point now) {
   const auto items = cip::decode_command_items(data, cip::encap_header_size);
   const auto* u = items ? cip::find_item(items.value(), cip::item::unconnected_data) : nullptr;
   if (u == nullptr || cip::find_item(items.value(), cip::item::null_address) == nullptr)

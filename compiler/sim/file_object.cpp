@@ -66,8 +66,10 @@ std::vector<attribute> instance_attributes() {
       file_attr(2, [](const state&, bytes& d) { put_stringi(d, "EDS and Icon Files"); }),
       file_attr(3, [](const state&, bytes& d) { cip::put_u16(d, 1); }),
       file_attr(4, [](const state& s, bytes& d) { put_stringi(d, s.dev.file.name); }),
-      file_attr(5, [](const state& s, bytes& d) { cip::put_u8(d, s.dev.file.major), cip::put_u8(d, s.dev.file.minor); }),
-      file_attr(6, [](const state& s, bytes& d) { cip::put_u32(d, static_cast<std::uint32_t>(s.dev.file.content.size())); }),
+      file_attr(5,
+                [](const state& s, bytes& d) { cip::put_u8(d, s.dev.file.major), cip::put_u8(d, s.dev.file.minor); }),
+      file_attr(
+          6, [](const state& s, bytes& d) { cip::put_u32(d, static_cast<std::uint32_t>(s.dev.file.content.size())); }),
       file_attr(7, [](const state& s, bytes& d) { cip::put_u16(d, cip::file_checksum(s.dev.file.content)); }),
       file_attr(10, [](const state&, bytes& d) { cip::put_u8(d, 1); }),  // read only
       file_attr(11, [](const state&, bytes& d) { cip::put_u8(d, 0); }),  // binary, not compressed
@@ -80,7 +82,10 @@ bytes packet(const state& s, cip::service service, std::uint8_t number, std::siz
   const auto n = std::min<std::size_t>(s.upload.transfer_size, content.size() - from);
   const bool is_first = from == 0, is_last = from + n == content.size();
   using type = cip::packet_type;
-  const auto t = is_first && is_last ? type::first_and_last : is_first ? type::first : is_last ? type::last : type::middle;
+  const auto t = is_first && is_last ? type::first_and_last
+                 : is_first          ? type::first
+                 : is_last           ? type::last
+                                     : type::middle;
   const auto d = cip::encode_upload_packet(number, t, cip::byte_view(content).subspan(from, n),
                                            is_last ? std::optional(cip::file_checksum(content)) : std::nullopt);
   return cip::encode_reply(service, general::success, {}, d);
@@ -92,7 +97,8 @@ bytes transfer(state& s, const cip::request& q) {
   auto& u = s.upload;
   if (!u.active) return cip::encode_reply(q.service, general::object_state_conflict);
   const auto number = q.data[0];
-  if (u.offset > 0 && number == static_cast<std::uint8_t>(u.next - 1)) return packet(s, q.service, number, u.last_offset);
+  if (u.offset > 0 && number == static_cast<std::uint8_t>(u.next - 1))
+    return packet(s, q.service, number, u.last_offset);
   if (number != u.next || u.done) return cip::encode_reply(q.service, general::invalid_parameter);
   auto reply = packet(s, q.service, number, u.offset);
   u.last_offset = u.offset;
@@ -108,7 +114,8 @@ bytes initiate(state& s, const cip::request& q) {
   if (q.data.size() > 1) return cip::encode_reply(q.service, general::too_much_data);
   if (q.data[0] == 0) return cip::encode_reply(q.service, general::invalid_parameter);
   s.upload = file_upload{true, false, q.data[0], 0, 0, 0};  // a new upload restarts one left unfinished
-  const auto d = cip::encode_upload_offer({static_cast<std::uint32_t>(s.dev.file.content.size()), s.upload.transfer_size});
+  const auto d =
+      cip::encode_upload_offer({static_cast<std::uint32_t>(s.dev.file.content.size()), s.upload.transfer_size});
   return cip::encode_reply(q.service, general::success, {}, d);
 }
 

@@ -28,7 +28,8 @@ std::string names_of(std::initializer_list<std::pair<bool, const char*>> flags) 
   for (const auto& [on, name] : flags)
     if (on) set.push_back(name);
   std::string out;
-  for (std::size_t i = 0; i < set.size(); ++i) out += std::string(i == 0 ? "" : i + 1 == set.size() ? " or " : ", ") + set[i];
+  for (std::size_t i = 0; i < set.size(); ++i)
+    out += std::string(i == 0 ? "" : i + 1 == set.size() ? " or " : ", ") + set[i];
   return out.empty() ? "none" : out;
 }
 
@@ -51,7 +52,8 @@ const char* trigger_name(unsigned t) {
 }
 
 std::string triggers_allowed(const model::trigger_transport& tt) {
-  return names_of({{tt.trigger_cyclic, "cyclic"}, {tt.trigger_cos, "change of state"}, {tt.trigger_application, "application"}});
+  return names_of(
+      {{tt.trigger_cyclic, "cyclic"}, {tt.trigger_cos, "change of state"}, {tt.trigger_application, "application"}});
 }
 
 bool owner_producing(const state& s, std::uint32_t input_instance) {
@@ -67,16 +69,20 @@ std::string size_words(std::uint32_t data, bool run_idle) {
 }
 
 // The size of one direction: fixed sizes must match, a variable size may be less.
-std::optional<refusal> check_size(const char* dir, cip::extended_status status, const cip::net_params& asked, bool variable_ok,
-                                  std::uint32_t number, std::uint32_t data, bool run_idle) {
+std::optional<refusal> check_size(const char* dir, cip::extended_status status, const cip::net_params& asked,
+                                  bool variable_ok, std::uint32_t number, std::uint32_t data, bool run_idle) {
   if (asked.type == cip::conn_type::null) return std::nullopt;
   if (asked.variable && !variable_ok)
-    return refusal{ext::invalid_connection_size, {}, fmt::format("{} variable size asked; Connection{} allows only fixed", dir, number)};
+    return refusal{ext::invalid_connection_size,
+                   {},
+                   fmt::format("{} variable size asked; Connection{} allows only fixed", dir, number)};
   const auto want = connections::network_size(data, run_idle);
   if (asked.variable ? asked.size <= want : asked.size == want) return std::nullopt;
-  return refusal{status, {want},
-                 fmt::format("{} {}size {} asked; Connection{} serves {}{} ({})", dir, asked.variable ? "variable " : "",
-                             asked.size, number, asked.variable ? "at most " : "", want, size_words(data, run_idle))};
+  return refusal{
+      status,
+      {want},
+      fmt::format("{} {}size {} asked; Connection{} serves {}{} ({})", dir, asked.variable ? "variable " : "",
+                  asked.size, number, asked.variable ? "at most " : "", want, size_words(data, run_idle))};
 }
 
 std::optional<refusal> check_rpi(const char* dir, const rpi_limits& r, std::uint32_t asked, std::uint32_t number) {
@@ -84,7 +90,8 @@ std::optional<refusal> check_rpi(const char* dir, const rpi_limits& r, std::uint
   const auto source = r.param != 0 ? fmt::format(" (the limits of Param{})", r.param)
                       : r.unset    ? std::string(" (its EDS gives no RPI: the default limits)")
                                    : std::string();
-  return refusal{ext::rpi_not_supported, {},
+  return refusal{ext::rpi_not_supported,
+                 {},
                  fmt::format("{} RPI {} us asked; Connection{} allows {}..{} us{}", dir, asked, number, r.min_us,
                              r.max_us, source)};
 }
@@ -93,15 +100,21 @@ std::optional<refusal> check_rpi(const char* dir, const rpi_limits& r, std::uint
 
 std::optional<refusal> check_key(const cip::identity& id, const cip::electronic_key& k) {
   if (k.vendor != 0 && k.vendor != id.vendor)
-    return refusal{ext::vendor_or_product_code_mismatch, {}, fmt::format("the key's vendor {} is not [Device]'s {}", k.vendor, id.vendor)};
+    return refusal{ext::vendor_or_product_code_mismatch,
+                   {},
+                   fmt::format("the key's vendor {} is not [Device]'s {}", k.vendor, id.vendor)};
   if (k.product_code != 0 && k.product_code != id.product_code)
-    return refusal{ext::vendor_or_product_code_mismatch, {},
+    return refusal{ext::vendor_or_product_code_mismatch,
+                   {},
                    fmt::format("the key's product code {} is not [Device]'s {}", k.product_code, id.product_code)};
   if (k.device_type != 0 && k.device_type != id.device_type)
-    return refusal{ext::device_type_mismatch, {},
+    return refusal{ext::device_type_mismatch,
+                   {},
                    fmt::format("the key's device type {} is not [Device]'s {}", k.device_type, id.device_type)};
-  if (k.major != 0 && (k.major != id.major || (k.compatible ? (k.minor > id.minor) : (k.minor != 0 && k.minor != id.minor))))
-    return refusal{ext::revision_mismatch, {},
+  if (k.major != 0 &&
+      (k.major != id.major || (k.compatible ? (k.minor > id.minor) : (k.minor != 0 && k.minor != id.minor))))
+    return refusal{ext::revision_mismatch,
+                   {},
                    fmt::format("the key's revision {}.{} ({} keying) does not fit [Device]'s {}.{}", k.major, k.minor,
                                k.compatible ? "compatible" : "exact", id.major, id.minor)};
   return std::nullopt;
@@ -115,20 +128,25 @@ std::optional<refusal> check_point(const state& s, const connection_point& p, co
   const bool trigger_ok = (trigger == 0 && c.tt.trigger_cyclic) || (trigger == 1 && c.tt.trigger_cos) ||
                           (trigger == 2 && c.tt.trigger_application);
   if ((fo.transport & 0x0F) != 1 || !trigger_ok)
-    return refusal{ext::transport_trigger_not_supported, {},
+    return refusal{ext::transport_trigger_not_supported,
+                   {},
                    fmt::format("class {}, trigger {} asked; Connection{} allows class 1, {}", fo.transport & 0x0F,
                                trigger_name(trigger), p.number, triggers_allowed(c.tt))};
   if (!type_allowed(c.cp.ot, fo.ot.type))
-    return refusal{ext::invalid_ot_type, {},
+    return refusal{ext::invalid_ot_type,
+                   {},
                    fmt::format("O->T connection type {} asked; Connection{} allows {}", type_name(fo.ot.type), p.number,
                                types_allowed(c.cp.ot))};
   if (!type_allowed(c.cp.to, fo.to.type))
-    return refusal{ext::invalid_to_type, {},
+    return refusal{ext::invalid_to_type,
+                   {},
                    fmt::format("T->O connection type {} asked; Connection{} allows {}", type_name(fo.to.type), p.number,
                                types_allowed(c.cp.to))};
-  if (auto r = check_size("O->T", ext::invalid_ot_size, fo.ot, c.cp.ot.variable, p.number, f.output_size, p.plan.ot_run_idle))
+  if (auto r = check_size("O->T", ext::invalid_ot_size, fo.ot, c.cp.ot.variable, p.number, f.output_size,
+                          p.plan.ot_run_idle))
     return r;
-  if (auto r = check_size("T->O", ext::invalid_to_size, fo.to, c.cp.to.variable, p.number, f.input_size, p.plan.to_run_idle))
+  if (auto r =
+          check_size("T->O", ext::invalid_to_size, fo.to, c.cp.to.variable, p.number, f.input_size, p.plan.to_run_idle))
     return r;
   if (fo.ot.type != cip::conn_type::null)
     if (auto r = check_rpi("O->T", p.ot_rpi, fo.ot_rpi_us, p.number)) return r;
@@ -137,22 +155,27 @@ std::optional<refusal> check_point(const state& s, const connection_point& p, co
   // The data segment counts words: an odd configuration size arrives padded.
   // 0x0126 carries the size accepted in 16-bit words, the data segment's unit.
   if (config && config->size() != f.config_size && config->size() != f.config_size + (f.config_size % 2))
-    return refusal{ext::invalid_configuration_size, {static_cast<std::uint16_t>((f.config_size + 1) / 2)},
-                   fmt::format("{} bytes of configuration data asked; Connection{} serves {} (configuration assembly {})",
-                               config->size(), p.number, f.config_size, f.config_instance)};
+    return refusal{
+        ext::invalid_configuration_size,
+        {static_cast<std::uint16_t>((f.config_size + 1) / 2)},
+        fmt::format("{} bytes of configuration data asked; Connection{} serves {} (configuration assembly {})",
+                    config->size(), p.number, f.config_size, f.config_instance)};
   if (s.connections.size() >= s.max_connections)
-    return refusal{ext::out_of_connections, {},
+    return refusal{ext::out_of_connections,
+                   {},
                    fmt::format("{} connections are open, the most the simulator holds", s.connections.size())};
   if (p.kind == model::app_type::exclusive_owner)
     for (const auto& o : s.connections)
       if (o.point && s.dev.points[*o.point].kind == model::app_type::exclusive_owner &&
           s.dev.points[*o.point].plan.facts.output_instance == f.output_instance)
-        return refusal{ext::ownership_conflict, {},
+        return refusal{ext::ownership_conflict,
+                       {},
                        fmt::format("output assembly {} is owned by the connection of serial {}, originator vendor {} "
                                    "and serial {}",
                                    f.output_instance, o.serial, o.vendor, o.originator_serial)};
   if (p.kind == model::app_type::listen_only && !owner_producing(s, f.input_instance))
-    return refusal{ext::non_listen_only_not_opened, {},
+    return refusal{ext::non_listen_only_not_opened,
+                   {},
                    fmt::format("Connection{} listens to input assembly {}, which no open connection produces", p.number,
                                f.input_instance)};
   return std::nullopt;

@@ -111,7 +111,8 @@ std::optional<input_refusal> set_bytes(assembly_instance& a, std::string_view he
       return input_refusal{diag_id::sim_inputs_hex,
                            fmt::format("'{}' is not a hex digit (bytes are written as \"01 02 0A\")", c)};
     const int v = std::isdigit(u) ? c - '0' : std::tolower(u) - 'a' + 10;
-    if (nibble < 0) nibble = v;
+    if (nibble < 0)
+      nibble = v;
     else {
       b.push_back(static_cast<std::uint8_t>(nibble << 4 | v));
       nibble = -1;
@@ -119,8 +120,8 @@ std::optional<input_refusal> set_bytes(assembly_instance& a, std::string_view he
   }
   if (nibble >= 0) return input_refusal{diag_id::sim_inputs_hex, "an odd number of hex digits"};
   if (b.size() != a.data.size())
-    return input_refusal{diag_id::sim_inputs_hex,
-                         fmt::format("instance {} holds {}, {} given", a.instance, plural(a.data.size(), "byte"), b.size())};
+    return input_refusal{diag_id::sim_inputs_hex, fmt::format("instance {} holds {}, {} given", a.instance,
+                                                              plural(a.data.size(), "byte"), b.size())};
   a.data = std::move(b);
   a.fixed = true;
   return std::nullopt;
@@ -140,17 +141,17 @@ std::variant<std::uint64_t, input_refusal> encode(const input_field& f, field_nu
   }
   if (v.is_real)
     return input_refusal{diag_id::sim_inputs_value_range,
-                         fmt::format("{} is {} {}-bit integer field: {} is not an integer", describe(f), article(f.bits),
-                                     f.bits, v.real)};
+                         fmt::format("{} is {} {}-bit integer field: {} is not an integer", describe(f),
+                                     article(f.bits), f.bits, v.real)};
   const auto bits = f.bits;
   const std::int64_t lo = f.is_signed ? (bits >= 64 ? INT64_MIN : -(std::int64_t{1} << (bits - 1))) : 0;
-  const std::int64_t hi = bits >= 64 ? INT64_MAX
+  const std::int64_t hi = bits >= 64    ? INT64_MAX
                           : f.is_signed ? (std::int64_t{1} << (bits - 1)) - 1
                                         : static_cast<std::int64_t>((std::uint64_t{1} << bits) - 1);
   if (v.integer < lo || v.integer > hi)
     return input_refusal{diag_id::sim_inputs_value_range,
-                         fmt::format("{} is {} {}-bit {} field: {} does not fit ({}..{})", describe(f), article(bits), bits,
-                                     f.is_signed ? "signed" : "unsigned", v.integer, lo, hi)};
+                         fmt::format("{} is {} {}-bit {} field: {} does not fit ({}..{})", describe(f), article(bits),
+                                     bits, f.is_signed ? "signed" : "unsigned", v.integer, lo, hi)};
   return static_cast<std::uint64_t>(v.integer);
 }
 
@@ -176,9 +177,10 @@ std::variant<std::vector<const input_field*>, input_refusal> fields_named(const 
     return out;
   };
   if (hits.empty())
-    return input_refusal{diag_id::sim_inputs_unknown_field,
-                         fmt::format("instance {} has no field \"{}\"{}{}", a.instance, name,
-                                     known.empty() ? " (its AssemN names no parameters)" : "; its fields: ", joined(known))};
+    return input_refusal{
+        diag_id::sim_inputs_unknown_field,
+        fmt::format("instance {} has no field \"{}\"{}{}", a.instance, name,
+                    known.empty() ? " (its AssemN names no parameters)" : "; its fields: ", joined(known))};
   if (params.size() > 1)
     return input_refusal{diag_id::sim_inputs_unknown_field,
                          fmt::format("\"{}\" names {} fields of instance {}: {}; name one by its ParamN", name,

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 #include <toml++/toml.h>
+#include <nlohmann/json.hpp>
 
 #include "sim/inputs.hpp"
 #include "sim/objects.hpp"
@@ -38,7 +38,8 @@ class first_settings {
   std::optional<input_refusal> assembly(std::string_view key, const assembly_instance& a, std::uint32_t line) {
     const auto [it, fresh] = assemblies_.try_emplace(a.instance, line);
     if (fresh) return std::nullopt;
-    return syntax(fmt::format("\"{}\" names instance {} a second time (first on line {})", key, a.instance, it->second));
+    return syntax(
+        fmt::format("\"{}\" names instance {} a second time (first on line {})", key, a.instance, it->second));
   }
   std::optional<input_refusal> field(std::string_view name, const assembly_instance& a, std::uint32_t line) {
     const auto param = field_param(a, name);
@@ -110,10 +111,14 @@ std::optional<input_error> load_toml(device& d, const std::string& path, std::st
       if (auto why = seen.field(name.str(), *a, static_cast<std::uint32_t>(name.source().begin.line)))
         return at(name.source(), *why);
       field_number v;
-      if (const auto* i = value.as_integer()) v.integer = i->get();
-      else if (const auto* f = value.as_floating_point()) v = {true, 0, f->get()};
-      else if (const auto* b = value.as_boolean()) v.integer = b->get() ? 1 : 0;
-      else return at(value.source(), syntax(fmt::format("{}: a field's value is a number", name.str())));
+      if (const auto* i = value.as_integer())
+        v.integer = i->get();
+      else if (const auto* f = value.as_floating_point())
+        v = {true, 0, f->get()};
+      else if (const auto* b = value.as_boolean())
+        v.integer = b->get() ? 1 : 0;
+      else
+        return at(value.source(), syntax(fmt::format("{}: a field's value is a number", name.str())));
       if (auto why = set_field(*a, name.str(), v)) return at(value.source(), *why);
     }
   }
@@ -148,7 +153,8 @@ std::optional<std::string> repeated_key(std::string_view text) {
       repeated = parsed.get<std::string>();
     return true;
   };
-  [[maybe_unused]] const auto whole = nlohmann::json::parse(text, note, false);  // no exceptions: the main parse reports
+  [[maybe_unused]] const auto whole =
+      nlohmann::json::parse(text, note, false);  // no exceptions: the main parse reports
   return repeated;
 }
 
@@ -159,7 +165,8 @@ std::optional<input_error> load_json(device& d, std::string_view text) {
   } catch (const nlohmann::json::parse_error& e) {
     return located(text, e.byte > 0 ? e.byte - 1 : 0, syntax(fmt::format("not JSON: {}", e.what())));
   }
-  if (!j.is_object()) return located(text, 0, syntax("the file is a JSON object of assembly: \"hex\" or {field: number}"));
+  if (!j.is_object())
+    return located(text, 0, syntax("the file is a JSON object of assembly: \"hex\" or {field: number}"));
   if (const auto key = repeated_key(text)) {
     const auto first = find_key(text, *key, 0);
     const auto line = located(text, first, {}).line;
@@ -176,15 +183,20 @@ std::optional<input_error> load_json(device& d, std::string_view text) {
       if (auto why = set_bytes(*a, value.get<std::string>())) return located(text, key_at, *why);
       continue;
     }
-    if (!value.is_object()) return located(text, key_at, syntax("an assembly is a hex string or an object of field: number"));
+    if (!value.is_object())
+      return located(text, key_at, syntax("an assembly is a hex string or an object of field: number"));
     for (const auto& [name, v] : value.items()) {
       const auto name_at = find_key(text, name, key_at);
       if (auto why = seen.field(name, *a, located(text, name_at, {}).line)) return located(text, name_at, *why);
       field_number n;
-      if (v.is_number_integer() && !(v.is_number_unsigned() && v.get<std::uint64_t>() > INT64_MAX)) n.integer = v.get<std::int64_t>();
-      else if (v.is_number()) n = {true, 0, v.get<double>()};
-      else if (v.is_boolean()) n.integer = v.get<bool>() ? 1 : 0;
-      else return located(text, name_at, syntax(fmt::format("{}: a field's value is a number", name)));
+      if (v.is_number_integer() && !(v.is_number_unsigned() && v.get<std::uint64_t>() > INT64_MAX))
+        n.integer = v.get<std::int64_t>();
+      else if (v.is_number())
+        n = {true, 0, v.get<double>()};
+      else if (v.is_boolean())
+        n.integer = v.get<bool>() ? 1 : 0;
+      else
+        return located(text, name_at, syntax(fmt::format("{}: a field's value is a number", name)));
       if (auto why = set_field(*a, name, n)) return located(text, name_at, *why);
     }
   }
@@ -196,9 +208,10 @@ std::string answer(bool ok, const std::string& rest) {
 }
 // Replaced, not thrown on: a line of standard input need not be UTF-8.
 std::string refuse(const input_refusal& why) {
-  return answer(false, fmt::format("\"error\":{},\"rule\":\"{}\"",
-                                   nlohmann::json(why.message).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace),
-                                   rule_of(why.id).name));
+  return answer(false,
+                fmt::format("\"error\":{},\"rule\":\"{}\"",
+                            nlohmann::json(why.message).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace),
+                            rule_of(why.id).name));
 }
 
 // The words of a control line, split at blanks; a double-quoted part may
@@ -232,7 +245,8 @@ std::string control(state& s, std::string_view line) {
   if (!split_words(line, words)) return refuse(syntax("a double quote is left unclosed"));
   if (words.empty() || words[0][0] == '#') return {};
   if (words[0] != "set" && words[0] != "get")
-    return refuse(syntax(fmt::format("unknown command \"{}\": set ASSEMBLY HEX... | set ASSEMBLY FIELD=NUMBER... | get ASSEMBLY", words[0])));
+    return refuse(syntax(fmt::format(
+        "unknown command \"{}\": set ASSEMBLY HEX... | set ASSEMBLY FIELD=NUMBER... | get ASSEMBLY", words[0])));
   if (words.size() < 2) return refuse(syntax(words[0] + " needs an assembly (an instance number, or AssemN)"));
   auto* a = find_assembly(s.dev, words[1]);
   if (a == nullptr) return refuse(unknown_assembly(words[1]));

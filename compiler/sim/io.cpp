@@ -26,9 +26,10 @@ void expire(state& s, clock::time_point now) {
   bool removed = false;
   for (auto it = s.connections.begin(); it != s.connections.end();) {
     if (it->expires <= now) {
-      log_event(s, "timeout", fmt::format("\"serial\":{},\"originator_vendor\":{},\"originator_serial\":{},"
-                                          "\"produced\":{},\"consumed\":{}",
-                                          it->serial, it->vendor, it->originator_serial, it->produced, it->consumed));
+      log_event(s, "timeout",
+                fmt::format("\"serial\":{},\"originator_vendor\":{},\"originator_serial\":{},"
+                            "\"produced\":{},\"consumed\":{}",
+                            it->serial, it->vendor, it->originator_serial, it->produced, it->consumed));
       it = s.connections.erase(it);
       removed = true;
     } else {
@@ -42,9 +43,10 @@ void expire(state& s, clock::time_point now) {
 void close_unsendable(state& s, const std::vector<std::uint32_t>& to_ids) {
   std::erase_if(s.connections, [&](const open_connection& c) {
     if (std::find(to_ids.begin(), to_ids.end(), c.to_id) == to_ids.end()) return false;
-    log_event(s, "close", fmt::format("\"serial\":{},\"originator_vendor\":{},\"originator_serial\":{},"
-                                      "\"why\":\"its frames do not fit a class 1 frame\"",
-                                      c.serial, c.vendor, c.originator_serial));
+    log_event(s, "close",
+              fmt::format("\"serial\":{},\"originator_vendor\":{},\"originator_serial\":{},"
+                          "\"why\":\"its frames do not fit a class 1 frame\"",
+                          c.serial, c.vendor, c.originator_serial));
     return true;
   });
   close_orphans(s);
@@ -63,9 +65,10 @@ void close_orphans(state& s) {
   std::erase_if(s.connections, [&](const open_connection& c) {
     if (!c.point || s.dev.points[*c.point].kind != model::app_type::listen_only) return false;
     if (has_owner(s.dev.points[*c.point].plan.facts.input_instance)) return false;
-    log_event(s, "close", fmt::format("\"serial\":{},\"originator_vendor\":{},\"originator_serial\":{},"
-                                      "\"why\":\"its owner closed\"",
-                                      c.serial, c.vendor, c.originator_serial));
+    log_event(s, "close",
+              fmt::format("\"serial\":{},\"originator_vendor\":{},\"originator_serial\":{},"
+                          "\"why\":\"its owner closed\"",
+                          c.serial, c.vendor, c.originator_serial));
     return true;
   });
 }
@@ -82,8 +85,9 @@ void consume_io(state& s, cip::byte_view frame, std::uint32_t from_ip, clock::ti
   if (!f) return;
   if (f->data.size() != p.plan.facts.output_size) {
     if (c->wrong_size++ == 0)
-      log_event(s, "wrong-size", fmt::format("\"connection\":{},\"bytes\":{},\"expected\":{}", p.number,
-                                             f->data.size(), p.plan.facts.output_size));
+      log_event(s, "wrong-size",
+                fmt::format("\"connection\":{},\"bytes\":{},\"expected\":{}", p.number, f->data.size(),
+                            p.plan.facts.output_size));
     return;  // a frame of the wrong size does not refresh the timeout
   }
   c->expires = now + c->timeout;
@@ -99,8 +103,9 @@ void consume_io(state& s, cip::byte_view frame, std::uint32_t from_ip, clock::ti
   if (a == nullptr) return;
   if (a->data != f->data || c->consumed == 1 || run_changed) {
     a->data = f->data;
-    log_event(s, "output", fmt::format("\"instance\":{},\"connection\":{},\"run\":{},\"sequence\":{},\"data\":\"{}\"",
-                                       a->instance, p.number, run, f->sequence_count, hex(a->data)));
+    log_event(s, "output",
+              fmt::format("\"instance\":{},\"connection\":{},\"run\":{},\"sequence\":{},\"data\":\"{}\"", a->instance,
+                          p.number, run, f->sequence_count, hex(a->data)));
   }
 }
 
@@ -131,7 +136,8 @@ std::vector<outgoing> produce_io(state& s, clock::time_point now) {
     }
     out.push_back({c.originator_ip, std::move(frame).value()});
     ++c.produced;
-    const auto period = std::chrono::duration_cast<clock::duration>(std::chrono::microseconds(std::max(c.to_rpi_us, 100u)));
+    const auto period =
+        std::chrono::duration_cast<clock::duration>(std::chrono::microseconds(std::max(c.to_rpi_us, 100u)));
     c.next_produce += period;
     if (c.next_produce <= now) {  // fell behind by a whole period: count it, do not burst
       ++c.late;

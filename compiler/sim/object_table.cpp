@@ -16,7 +16,8 @@ using cip::bytes;
 using general = cip::general_status;
 
 const attribute* find(const attribute_level& lv, std::uint32_t number) {
-  const auto it = std::find_if(lv.attributes.begin(), lv.attributes.end(), [&](const attribute& a) { return a.number == number; });
+  const auto it =
+      std::find_if(lv.attributes.begin(), lv.attributes.end(), [&](const attribute& a) { return a.number == number; });
   return it == lv.attributes.end() ? nullptr : &*it;
 }
 

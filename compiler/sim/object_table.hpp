@@ -45,8 +45,8 @@ struct attribute {
 // The class (instance 0) or its instances.
 struct attribute_level {
   std::vector<attribute> attributes;  // in number order: Get_Attribute_All returns them so
-  bool get_all = false;  // Get_Attribute_All served
-  bool set = false;      // Set_Attribute_Single served (read-only attributes refused as not settable)
+  bool get_all = false;               // Get_Attribute_All served
+  bool set = false;                   // Set_Attribute_Single served (read-only attributes refused as not settable)
 };
 
 struct object_service {

@@ -57,7 +57,8 @@ object_table identity_table() {
                       cip::put_identity_fields(all, id);
                       d.insert(d.end(), all.begin() + 14, all.end());
                     }),
-      identity_attr(8, [](const cip::identity& id, bytes& d) { cip::put_u8(d, id.state); }, false),
+      identity_attr(
+          8, [](const cip::identity& id, bytes& d) { cip::put_u8(d, id.state); }, false),
   };
   return t;
 }
@@ -93,7 +94,8 @@ object_table assembly_table() {
   data.size = [](const state& s, std::uint32_t i) { return assembly_at(s, i).data.size(); };
   t.instance_level.attributes = {
       std::move(data),
-      {4, [](const state& s, std::uint32_t i, bytes& d) { cip::put_u16(d, static_cast<std::uint16_t>(assembly_at(s, i).data.size())); }},
+      {4, [](const state& s, std::uint32_t i,
+             bytes& d) { cip::put_u16(d, static_cast<std::uint16_t>(assembly_at(s, i).data.size())); }},
   };
   return t;
 }
@@ -124,7 +126,9 @@ void log_event(state& s, const std::string& what, const std::string& fields) {
 
 bytes handle_cip(state& s, const link& l, cip::byte_view request, clock::time_point now) {
   auto q = cip::decode_request(request, 0);
-  if (!q) return cip::encode_reply(static_cast<cip::service>(request.empty() ? 0 : request[0] & 0x7F), general::path_segment_error);
+  if (!q)
+    return cip::encode_reply(static_cast<cip::service>(request.empty() ? 0 : request[0] & 0x7F),
+                             general::path_segment_error);
   auto segs = cip::decode_path(q->path, 0);
   if (!segs) return cip::encode_reply(q->service, general::path_segment_error);
   const auto a = cip::address_of(segs.value());

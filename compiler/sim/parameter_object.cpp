@@ -14,11 +14,11 @@
 
 #include <fmt/format.h>
 
+#include "base/utf8.hpp"
 #include "cip/device_reply.hpp"
 #include "cip/message.hpp"
 #include "sim/object_table.hpp"
 #include "sim/objects.hpp"
-#include "base/utf8.hpp"
 
 namespace edsc::sim {
 
@@ -45,8 +45,10 @@ std::uint64_t get_le(cip::byte_view b) {
 
 bytes encode_real(const schema::cip_type_info& t, double v) {
   bytes b;
-  if (t.size == 4) put_le(b, std::bit_cast<std::uint32_t>(static_cast<float>(v)), 4);
-  else put_le(b, std::bit_cast<std::uint64_t>(v), 8);
+  if (t.size == 4)
+    put_le(b, std::bit_cast<std::uint32_t>(static_cast<float>(v)), 4);
+  else
+    put_le(b, std::bit_cast<std::uint64_t>(v), 8);
   return b;
 }
 
@@ -124,11 +126,13 @@ void put_short_string(bytes& b, const std::string& s) {
 bytes text_value(const model::param& p, std::uint8_t data_type, std::uint8_t size) {
   bytes b;
   const auto text = short_text(p.default_value);
-  if (data_type == schema::code::SHORT_STRING) put_short_string(b, text);
+  if (data_type == schema::code::SHORT_STRING)
+    put_short_string(b, text);
   else if (data_type == schema::code::STRING) {
     cip::put_u16(b, static_cast<std::uint16_t>(text.size()));
     b.insert(b.end(), text.begin(), text.end());
-  } else b.assign(size, 0);
+  } else
+    b.assign(size, 0);
   return b;
 }
 
@@ -156,7 +160,8 @@ parameter_instance make_instance(const model::device& dev, const model::param& p
     pi.read_only = true;
   }
   pi.value = pi.def;
-  if (const auto* path = dev.path_of(p.link_path); path != nullptr && connections::encode_connection_path(dev, *path, pi.link_path))
+  if (const auto* path = dev.path_of(p.link_path);
+      path != nullptr && connections::encode_connection_path(dev, *path, pi.link_path))
     pi.link_path.clear();  // a path the device cannot write out ([ParamN] in it): none
   pi.multiplier = number_or<std::uint16_t>(p.scaling_multiplier, 1);
   pi.divisor = number_or<std::uint16_t>(p.scaling_divisor, 1);
@@ -170,9 +175,7 @@ parameter_instance make_instance(const model::device& dev, const model::param& p
   return pi;
 }
 
-const parameter_instance& param_at(const state& s, std::uint32_t instance) {
-  return *s.dev.param(instance);
-}
+const parameter_instance& param_at(const state& s, std::uint32_t instance) { return *s.dev.param(instance); }
 
 void put_bytes(bytes& d, const bytes& v) { d.insert(d.end(), v.begin(), v.end()); }
 
@@ -186,9 +189,8 @@ cip::general_status set_value(state& s, std::uint32_t instance, cip::byte_view d
   auto& p = *s.dev.param(instance);
   const auto& t = *p.type;
   const bool in_range = compare(t, data, p.min) >= 0 && compare(t, data, p.max) <= 0;
-  const bool listed = p.allowed.empty() || std::any_of(p.allowed.begin(), p.allowed.end(), [&](const bytes& v) {
-                        return compare(t, data, v) == 0;
-                      });
+  const bool listed = p.allowed.empty() || std::any_of(p.allowed.begin(), p.allowed.end(),
+                                                       [&](const bytes& v) { return compare(t, data, v) == 0; });
   if (!in_range || !listed) return general::invalid_attribute_value;
   p.value.assign(data.begin(), data.end());
   log_event(s, "parameter", fmt::format("\"instance\":{},\"data\":\"{}\"", p.number, hex(p.value)));
@@ -198,7 +200,9 @@ cip::general_status set_value(state& s, std::uint32_t instance, cip::byte_view d
 attribute value_attr() {
   auto a = param_attr(1, [](const parameter_instance& p, bytes& d) { put_bytes(d, p.value); });
   a.set = set_value;
-  a.settable = [](const state& s, std::uint32_t i) { return !param_at(s, i).read_only && param_at(s, i).type != nullptr; };
+  a.settable = [](const state& s, std::uint32_t i) {
+    return !param_at(s, i).read_only && param_at(s, i).type != nullptr;
+  };
   a.size = [](const state& s, std::uint32_t i) -> std::size_t { return param_at(s, i).type->size; };
   return a;
 }
@@ -238,17 +242,20 @@ attribute class_u16(std::uint32_t number, std::uint16_t (*of)(const device&)) {
 
 void add_parameters(const model::device& dev, device& d) {
   for (const auto& p : dev.params)
-    if (p.kind == model::param_kind::param && p.number > 0 && p.number <= 0xFFFF) d.params.push_back(make_instance(dev, p));
+    if (p.kind == model::param_kind::param && p.number > 0 && p.number <= 0xFFFF)
+      d.params.push_back(make_instance(dev, p));
   std::sort(d.params.begin(), d.params.end(), [](const auto& x, const auto& y) { return x.number < y.number; });
   // A ParamN written twice: the first is the model's, and the device's.
-  d.params.erase(std::unique(d.params.begin(), d.params.end(), [](const auto& x, const auto& y) { return x.number == y.number; }),
-                 d.params.end());
+  d.params.erase(
+      std::unique(d.params.begin(), d.params.end(), [](const auto& x, const auto& y) { return x.number == y.number; }),
+      d.params.end());
   d.param_class_descriptor = number_or<std::uint16_t>(dev.parameter_class.descriptor, 0x0003);
   d.cfg_assembly = number_or<std::uint16_t>(dev.parameter_class.cfg_assembly, 0);
 }
 
 parameter_instance* device::param(std::uint32_t number) {
-  auto it = std::lower_bound(params.begin(), params.end(), number, [](const auto& p, std::uint32_t n) { return p.number < n; });
+  auto it = std::lower_bound(params.begin(), params.end(), number,
+                             [](const auto& p, std::uint32_t n) { return p.number < n; });
   return it != params.end() && it->number == number ? &*it : nullptr;
 }
 const parameter_instance* device::param(std::uint32_t number) const { return const_cast<device*>(this)->param(number); }
@@ -257,15 +264,17 @@ object_table parameter_table() {
   object_table t;
   t.class_id = cip::code(cip::class_id::parameter);
   t.present = [](const state& s) { return !s.dev.params.empty(); };
-  t.class_level = attribute_level{{
-                                      constant_u16(1, 1),  // revision
-                                      class_u16(2, [](const device& d) { return static_cast<std::uint16_t>(d.params.back().number); }),
-                                      class_u16(3, [](const device& d) { return static_cast<std::uint16_t>(d.params.size()); }),
-                                      class_u16(8, [](const device& d) { return d.param_class_descriptor; }),
-                                      class_u16(9, [](const device& d) { return d.cfg_assembly; }),
-                                      {10, [](const state&, std::uint32_t, bytes& d) { cip::put_u8(d, 0); }},  // English
-                                  },
-                                  false, true};
+  t.class_level = attribute_level{
+      {
+          constant_u16(1, 1),  // revision
+          class_u16(2, [](const device& d) { return static_cast<std::uint16_t>(d.params.back().number); }),
+          class_u16(3, [](const device& d) { return static_cast<std::uint16_t>(d.params.size()); }),
+          class_u16(8, [](const device& d) { return d.param_class_descriptor; }),
+          class_u16(9, [](const device& d) { return d.cfg_assembly; }),
+          {10, [](const state&, std::uint32_t, bytes& d) { cip::put_u8(d, 0); }},  // English
+      },
+      false,
+      true};
   t.exists = [](const state& s, std::uint32_t i) { return s.dev.param(i) != nullptr; };
   t.missing = general::object_does_not_exist;
   t.instance_level = {instance_attributes(), true, true};

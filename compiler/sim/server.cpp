@@ -84,9 +84,10 @@ bool read_control(state& s, int fd, std::string& pending, const std::function<vo
 }  // namespace
 
 std::string listening_line(const state& s, const std::string& address, std::uint16_t port, std::uint16_t io_port) {
-  auto line = fmt::format("{{\"event\":\"listening\",\"address\":\"{}\",\"port\":{},\"io_port\":{},"
-                          "\"connection_points\":{},\"assemblies\":{}",
-                          address, port, io_port, s.dev.points.size(), s.dev.assemblies.size());
+  auto line = fmt::format(
+      "{{\"event\":\"listening\",\"address\":\"{}\",\"port\":{},\"io_port\":{},"
+      "\"connection_points\":{},\"assemblies\":{}",
+      address, port, io_port, s.dev.points.size(), s.dev.assemblies.size());
   std::string unset;
   for (const auto& p : s.dev.points)
     if (p.ot_rpi.unset || p.to_rpi.unset) unset += fmt::format("{}{}", unset.empty() ? "" : ",", p.number);
@@ -128,7 +129,9 @@ int wait_ready(const state& s, const loop& lp, std::vector<pollfd>& fds) {
   auto wake = clock::now() + std::chrono::milliseconds(100);
   if (const auto d = next_deadline(s); d && *d < wake) wake = *d;
   const auto wait = std::chrono::duration_cast<std::chrono::microseconds>(wake - clock::now()).count();
-  fds = {{lp.socks.tcp.get(), POLLIN, 0}, {lp.socks.udp.get(), POLLIN, 0}, {lp.socks.io.get(), POLLIN, 0},
+  fds = {{lp.socks.tcp.get(), POLLIN, 0},
+         {lp.socks.udp.get(), POLLIN, 0},
+         {lp.socks.io.get(), POLLIN, 0},
          {lp.control_fd, POLLIN, 0}};
   for (const auto& c : lp.clients) fds.push_back({c.sock.get(), POLLIN, 0});
   // ppoll for sub-millisecond RPIs; a negative wait means a deadline is already due.
@@ -163,8 +166,8 @@ void drain_io(state& s, loop& lp, clock::time_point now) {
   for (int i = 0; i < 64; ++i) {  // drain what is there, boundedly
     sockaddr_in peer{};
     socklen_t len = sizeof peer;
-    const auto n = ::recvfrom(lp.socks.io.get(), lp.frame.data(), lp.frame.size(), 0,
-                              reinterpret_cast<sockaddr*>(&peer), &len);
+    const auto n =
+        ::recvfrom(lp.socks.io.get(), lp.frame.data(), lp.frame.size(), 0, reinterpret_cast<sockaddr*>(&peer), &len);
     if (n <= 0) break;
     consume_io(s, cip::byte_view(lp.frame.data(), static_cast<std::size_t>(n)), peer.sin_addr.s_addr, now);
   }
@@ -176,7 +179,7 @@ void handle_ready(state& s, loop& lp, const std::vector<pollfd>& fds, clock::tim
   if (fds[1].revents & POLLIN) answer_datagram(s, lp, now);
   if (fds[2].revents & POLLIN) drain_io(s, lp, now);
   if ((fds[3].revents & (POLLIN | POLLHUP | POLLERR)) && !read_control(s, lp.control_fd, lp.control_pending, emit))
-    lp.control_fd = -1;  // poll() skips a negative descriptor
+    lp.control_fd = -1;                               // poll() skips a negative descriptor
   for (std::size_t i = 0; i + 4 < fds.size(); ++i) {  // clients accepted just now wait a turn
     bool drop = false;
     if (fds[4 + i].revents & (POLLIN | POLLHUP | POLLERR)) handle_client(s, lp.clients[i], drop, now);

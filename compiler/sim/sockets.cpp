@@ -26,14 +26,16 @@ std::string address_text(const sockaddr_in& a) {
 // tests/sim/test_sim_ports.cpp starts a second simulator to see it).
 net::result<net::fd> tcp_listener(const sockaddr_in& at) {
   net::fd s(::socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0));
-  if (!s.valid()) return net::error{net::error_id::socket, fmt::format("cannot create a TCP socket: {}", std::strerror(errno))};
+  if (!s.valid())
+    return net::error{net::error_id::socket, fmt::format("cannot create a TCP socket: {}", std::strerror(errno))};
   const int one = 1;
   ::setsockopt(s.get(), SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
   if (::bind(s.get(), reinterpret_cast<const sockaddr*>(&at), sizeof at) == 0 && ::listen(s.get(), 16) == 0) return s;
   if (errno == EADDRINUSE)
-    return net::error{net::error_id::socket,
-                      fmt::format("TCP port {} on {} is already in use by another program", ntohs(at.sin_port), address_text(at))};
-  return net::error{net::error_id::socket, fmt::format("cannot listen on TCP {}: {}", net::to_string(at), std::strerror(errno))};
+    return net::error{net::error_id::socket, fmt::format("TCP port {} on {} is already in use by another program",
+                                                         ntohs(at.sin_port), address_text(at))};
+  return net::error{net::error_id::socket,
+                    fmt::format("cannot listen on TCP {}: {}", net::to_string(at), std::strerror(errno))};
 }
 
 std::uint16_t bound_port(int sock) {
@@ -81,7 +83,9 @@ net::result<sockets> open_sockets(const server_options& opt) {
   if (::inet_pton(AF_INET, opt.address.c_str(), &at.sin_addr) != 1)
     return net::error{net::error_id::address, fmt::format("--address {}: not an IPv4 address", opt.address)};
   if (opt.port == opt.io_port)
-    return net::error{net::error_id::address, fmt::format("--port {} is the class 1 I/O port: encapsulation needs a port of its own", opt.port)};
+    return net::error{
+        net::error_id::address,
+        fmt::format("--port {} is the class 1 I/O port: encapsulation needs a port of its own", opt.port)};
   sockets out;
   at.sin_port = htons(opt.port);
   auto tcp = tcp_listener(at);
@@ -98,8 +102,9 @@ net::result<sockets> open_sockets(const server_options& opt) {
   auto io = net::udp_socket(at);
   if (!io)
     return net::error{net::error_id::socket,
-                      io.error().message + " (class 1 I/O: a device and a scanner on one address both need it; give "
-                                           "the simulator an address of its own with --address)"};
+                      io.error().message +
+                          " (class 1 I/O: a device and a scanner on one address both need it; give "
+                          "the simulator an address of its own with --address)"};
   out.io = std::move(*io);
   return out;
 }

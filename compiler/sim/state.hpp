@@ -21,8 +21,8 @@ struct open_connection {
   std::uint32_t ot_id = 0, to_id = 0;
   std::uint16_t serial = 0, vendor = 0;
   std::uint32_t originator_serial = 0;
-  std::uint32_t originator_ip = 0;  // network order: where T->O frames go
-  std::optional<std::size_t> point; // index into device::points; none: class 3
+  std::uint32_t originator_ip = 0;   // network order: where T->O frames go
+  std::optional<std::size_t> point;  // index into device::points; none: class 3
   std::uint32_t ot_rpi_us = 0, to_rpi_us = 0;
   bool consumes = false, produces = false;  // O->T / T->O not null
   clock::duration timeout{};                // multiplier x O->T RPI
@@ -36,8 +36,8 @@ struct open_connection {
 
 // One TCP connection (or the UDP socket): the session registered on it.
 struct link {
-  std::uint32_t peer_ip = 0;  // network order
-  std::uint32_t session = 0;  // 0: none registered
+  std::uint32_t peer_ip = 0;   // network order
+  std::uint32_t session = 0;   // 0: none registered
   std::uint32_t local_ip = 0;  // network order: the address the peer reached (ListIdentity reports it)
 };
 
@@ -46,7 +46,7 @@ struct link {
 struct file_upload {
   bool active = false, done = false;
   std::uint8_t transfer_size = 0;
-  std::uint8_t next = 0;                  // the transfer number expected next
+  std::uint8_t next = 0;                    // the transfer number expected next
   std::size_t offset = 0, last_offset = 0;  // bytes sent; where the last packet sent began
 };
 
@@ -60,7 +60,6 @@ struct state {
   // received, connections opened, closed and timed out. The loop drains it.
   std::vector<std::string> log;
   std::uint64_t input_tick = 0;  // drives the counter pattern of input data
-
 };
 
 // Identity attribute 5 (the bits as OpENer's cipidentity.h names them):
@@ -80,7 +79,9 @@ struct state {
   }
   using cip::device_state;
   const auto word = static_cast<std::uint16_t>(owned ? cip::code(cip::identity_bit::owned) : 0);
-  return cip::with_device_state(word, !io ? device_state::no_io : run ? device_state::io_running : device_state::io_idle);
+  return cip::with_device_state(word, !io   ? device_state::no_io
+                                      : run ? device_state::io_running
+                                            : device_state::io_idle);
 }
 
 // What to send back on the same socket; `close` ends a TCP connection.

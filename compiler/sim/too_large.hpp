@@ -11,8 +11,9 @@
 namespace edsc::sim {
 
 inline void log_too_large(state& s, const char* what, const cip::encode_error& e) {
-  log_event(s, "too-large",
-            fmt::format("\"what\":\"{}\",\"field\":\"{}\",\"length\":{},\"limit\":{}", what, e.field, e.length, e.limit));
+  log_event(
+      s, "too-large",
+      fmt::format("\"what\":\"{}\",\"field\":\"{}\",\"length\":{},\"limit\":{}", what, e.field, e.length, e.limit));
 }
 
 }  // namespace edsc::sim

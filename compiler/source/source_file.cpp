@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "source/line_starts.hpp"
 #include "base/utf8.hpp"
+#include "source/line_starts.hpp"
 
 namespace edsc {
 

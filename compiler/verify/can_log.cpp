@@ -97,7 +97,8 @@ std::optional<std::string> read_candump_log(std::string_view line, can_frame& f)
     return std::nullopt;
   }
   std::string cleaned;  // candump -L may separate bytes with '.'
-  for (const char c : data) if (c != '.') cleaned += c;
+  for (const char c : data)
+    if (c != '.') cleaned += c;
   return parse_bytes(cleaned, f.data);
 }
 
@@ -158,8 +159,10 @@ can_log read_can_log(std::string_view text) {
     } else {
       err = "not a candump (-l, -L or screen) line nor a step/dir/can_id/data TSV row";
     }
-    if (err) log.problems.push_back({line_no, where, std::move(*err)});
-    else log.frames.push_back(std::move(f));
+    if (err)
+      log.problems.push_back({line_no, where, std::move(*err)});
+    else
+      log.frames.push_back(std::move(f));
   }
   return log;
 }

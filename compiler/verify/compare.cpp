@@ -42,10 +42,10 @@ class comparer {
       if (!only || n == *only) nodes.push_back(n);
     if (nodes.empty()) {
       const span where = log_.frames.empty() ? span{} : log_.frames.front().where;
-      result_.diags.push_back(make_diagnostic(
-          diag_id::verify_no_node, where,
-          only ? fmt::format("no frame from MAC {} in the capture; nothing to compare", *only)
-               : std::string("no DeviceNet slave answers in the capture; nothing to compare")));
+      result_.diags.push_back(
+          make_diagnostic(diag_id::verify_no_node, where,
+                          only ? fmt::format("no frame from MAC {} in the capture; nothing to compare", *only)
+                               : std::string("no DeviceNet slave answers in the capture; nothing to compare")));
     }
     for (const auto n : nodes) node(n);
     std::stable_sort(result_.diags.begin(), result_.diags.end(),
@@ -68,7 +68,7 @@ class comparer {
     auto d = make_diagnostic(id, log_.frames[*x.answer].where, std::move(message));
     d.notes.push_back({log_.frames[x.request].where,
                        fmt::format("the scanner asked for {} here", x.has_attr ? attribute_name(x.cls, x.inst, x.attr)
-                                                                              : service_name(x.service, x.cls))});
+                                                                               : service_name(x.service, x.cls))});
     result_.diags.push_back(std::move(d));
   }
 
@@ -228,11 +228,11 @@ class comparer {
         continue;
       }
       wrong[key] = {result_.diags.size(), 0};
-      result_.diags.push_back(make_diagnostic(
-          diag_id::verify_io_length, log_.frames[e.frame].where,
-          fmt::format("{} I/O frame {} MAC {} carries {} where the EDS says {} ({})", type_names[type],
-                      e.produced ? "from" : "to", mac, plural(e.length, "byte"), expected,
-                      size_source(type, e.produced))));
+      result_.diags.push_back(
+          make_diagnostic(diag_id::verify_io_length, log_.frames[e.frame].where,
+                          fmt::format("{} I/O frame {} MAC {} carries {} where the EDS says {} ({})", type_names[type],
+                                      e.produced ? "from" : "to", mac, plural(e.length, "byte"), expected,
+                                      size_source(type, e.produced))));
     }
     for (const auto& [key, v] : wrong)
       if (v.second > 0) result_.diags[v.first].message += fmt::format(" (and {} more frames like it)", v.second);
@@ -249,8 +249,8 @@ class comparer {
 
 }  // namespace
 
-verify_result compare(const can_log& log, const conversation& conv,
-                      const model::device& dev, const source_file& eds, std::optional<unsigned> mac) {
+verify_result compare(const can_log& log, const conversation& conv, const model::device& dev, const source_file& eds,
+                      std::optional<unsigned> mac) {
   return comparer(log, conv, dev, eds).run(mac);
 }
 

@@ -15,11 +15,11 @@
 namespace edsc::verify {
 
 struct verify_result {
-  diagnostics diags;                  // into the capture, sorted by position
+  diagnostics diags;                    // into the capture, sorted by position
   std::vector<std::string> eds_errors;  // the EDS lacks what the comparison needs
 };
 
-[[nodiscard]] verify_result compare(const can_log& log, const conversation& conv,
-                                    const model::device& dev, const source_file& eds, std::optional<unsigned> mac);
+[[nodiscard]] verify_result compare(const can_log& log, const conversation& conv, const model::device& dev,
+                                    const source_file& eds, std::optional<unsigned> mac);
 
 }  // namespace edsc::verify

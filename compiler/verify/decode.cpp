@@ -12,8 +12,7 @@ namespace edsc::verify {
 
 namespace {
 
-constexpr std::uint8_t svc_get = 0x0E, svc_set = 0x10, svc_allocate = 0x4B, svc_release = 0x4C,
-                       svc_error = 0x94;
+constexpr std::uint8_t svc_get = 0x0E, svc_set = 0x10, svc_allocate = 0x4B, svc_release = 0x4C, svc_error = 0x94;
 
 // What the decoder remembers of one node between frames.
 struct node_state {
@@ -83,12 +82,18 @@ class decoder {
     heard_.insert(d.mac);
     io_event e{i, d.mac, true, conn_type::cos, node.allocated, f.data.size()};
     switch (d.message) {
-      case 0xC: d.label = "G1 msg 12: multicast poll response"; d.meaning = plural(f.data.size(), "byte"); return;
+      case 0xC:
+        d.label = "G1 msg 12: multicast poll response";
+        d.meaning = plural(f.data.size(), "byte");
+        return;
       case 0xD:
         e.type = (node.allocated & choice_cyclic) != 0 ? conn_type::cyclic : conn_type::cos;
         d.label = "G1 msg 13: COS/cyclic data";
         break;
-      case 0xE: e.type = conn_type::strobe; d.label = "G1 msg 14: bit-strobe response"; break;
+      case 0xE:
+        e.type = conn_type::strobe;
+        d.label = "G1 msg 14: bit-strobe response";
+        break;
       case 0xF:
         if ((node.allocated & choice_poll) == 0 && (node.allocated & (choice_cos | choice_cyclic)) != 0) {
           d.label = "G1 msg 15: COS/cyclic acknowledge";
@@ -112,8 +117,8 @@ class decoder {
     const auto& f = log_.frames[i];
     auto& node = nodes_[d.mac];
     static constexpr std::array<const char*, 8> names{
-        "bit-strobe command", "multicast poll command", "COS/cyclic acknowledge", "explicit response",
-        "explicit request",   "poll/COS/cyclic command", "unconnected request", "duplicate MAC ID check"};
+        "bit-strobe command", "multicast poll command",  "COS/cyclic acknowledge", "explicit response",
+        "explicit request",   "poll/COS/cyclic command", "unconnected request",    "duplicate MAC ID check"};
     d.label = fmt::format("G2 msg {}: {}", d.message, names[d.message]);
     switch (d.message) {
       case 0:
@@ -121,10 +126,22 @@ class decoder {
         d.dir = 'M';
         d.meaning = fmt::format("master MAC {}, {}", d.mac, plural(f.data.size(), "byte"));
         return;
-      case 2: d.dir = 'M'; d.meaning = fmt::format("to MAC {}", d.mac); addressed_.insert(d.mac); return;
-      case 3: d.dir = 'S'; heard_.insert(d.mac); answer(i, d, node); return;
+      case 2:
+        d.dir = 'M';
+        d.meaning = fmt::format("to MAC {}", d.mac);
+        addressed_.insert(d.mac);
+        return;
+      case 3:
+        d.dir = 'S';
+        heard_.insert(d.mac);
+        answer(i, d, node);
+        return;
       case 4:
-      case 6: d.dir = 'M'; addressed_.insert(d.mac); request(i, d, node); return;
+      case 6:
+        d.dir = 'M';
+        addressed_.insert(d.mac);
+        request(i, d, node);
+        return;
       case 5: {
         d.dir = 'M';
         addressed_.insert(d.mac);
@@ -159,7 +176,7 @@ class decoder {
     if (b.size() < 4 || (b[0] & 0x80) != 0 || (b[1] & 0x80) != 0) {
       d.undecodable = true;
       d.why = (b.size() >= 1 && (b[0] & 0x80) != 0) ? "a fragmented request (not decoded)"
-                                                     : "too short or not a request body (hdr svc class inst)";
+                                                    : "too short or not a request body (hdr svc class inst)";
       return;
     }
     exchange x;

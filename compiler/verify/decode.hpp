@@ -15,8 +15,8 @@ namespace edsc::verify {
 enum class conn_type : std::uint8_t { poll, strobe, cos, cyclic };
 
 // Allocation choice bits (request byte 4).
-inline constexpr std::uint8_t choice_explicit = 0x01, choice_poll = 0x02, choice_strobe = 0x04,
-                              choice_multicast = 0x08, choice_cos = 0x10, choice_cyclic = 0x20;
+inline constexpr std::uint8_t choice_explicit = 0x01, choice_poll = 0x02, choice_strobe = 0x04, choice_multicast = 0x08,
+                              choice_cos = 0x10, choice_cyclic = 0x20;
 
 struct decoded_frame {
   std::size_t frame = 0;  // index into can_log::frames
@@ -27,7 +27,7 @@ struct decoded_frame {
   std::string label;      // "G2 msg 4: explicit request"
   std::string meaning;    // plain words for --decode
   bool undecodable = false;
-  std::string why;        // when undecodable
+  std::string why;  // when undecodable
 };
 
 // One explicit request and the answer it got (if any).

@@ -14,12 +14,15 @@ std::string service_name(std::uint8_t service, std::uint8_t cls) {
 
 std::string attribute_name(std::uint8_t cls, std::uint8_t inst, std::uint8_t attr) {
   if (cls == 0x01) {
-    static constexpr const char* names[] = {"", "vendor ID", "device type", "product code", "revision",
-                                            "status", "serial number", "product name"};
-    return attr >= 1 && attr <= 7 ? fmt::format("Identity {}", names[attr]) : fmt::format("Identity attribute {}", attr);
+    static constexpr const char* names[] = {"",         "vendor ID", "device type",   "product code",
+                                            "revision", "status",    "serial number", "product name"};
+    return attr >= 1 && attr <= 7 ? fmt::format("Identity {}", names[attr])
+                                  : fmt::format("Identity attribute {}", attr);
   }
   if (cls == 0x03) {
-    return attr == 1 ? "DeviceNet MAC ID" : attr == 2 ? "DeviceNet baud rate" : fmt::format("DeviceNet attribute {}", attr);
+    return attr == 1   ? "DeviceNet MAC ID"
+           : attr == 2 ? "DeviceNet baud rate"
+                       : fmt::format("DeviceNet attribute {}", attr);
   }
   if (cls == 0x05) {
     static constexpr const char* conns[] = {"", "explicit", "polled", "bit-strobed", "COS/cyclic", "multicast poll"};
@@ -45,8 +48,8 @@ std::string status_name(std::uint8_t general) {
 }
 
 std::string choice_names(std::uint8_t choice) {
-  static constexpr const char* names[] = {"explicit", "poll", "bit-strobe", "multicast poll",
-                                          "COS", "cyclic", "ack suppression", "bit 7"};
+  static constexpr const char* names[] = {"explicit", "poll",   "bit-strobe",      "multicast poll",
+                                          "COS",      "cyclic", "ack suppression", "bit 7"};
   std::string out;
   for (int b = 0; b < 8; ++b) {
     if ((choice & (1u << b)) == 0) continue;
@@ -66,8 +69,8 @@ std::string render_table(const can_log& log, const conversation& conv) {
   std::optional<double> t0;
   for (const auto& f : log.frames)
     if (f.time && !t0) t0 = f.time;
-  std::string out = fmt::format("{:>11}  {:3}  {:5}  {:<34}  {}\n", t0 ? "time" : "line", "dir", "id",
-                                "group/message", "meaning");
+  std::string out =
+      fmt::format("{:>11}  {:3}  {:5}  {:<34}  {}\n", t0 ? "time" : "line", "dir", "id", "group/message", "meaning");
   for (const auto& d : conv.frames) {
     const auto& f = log.frames[d.frame];
     const auto when = f.time && t0 ? fmt::format("{:+.6f}", *f.time - *t0) : fmt::format("{}", f.line);

@@ -2,12 +2,12 @@
 // Helpers of the authoring tests: files, a scratch directory, running edsc.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
 #include <vector>
 
 #include "corpus_dirs.hpp"
@@ -30,9 +30,7 @@ inline void write_bytes(const fs::path& p, const std::string& bytes) {
 }
 
 // Both corpora; a fixed sample under the sanitizers (corpus_dirs.hpp).
-inline std::vector<fs::path> corpus_files() {
-  return edsc::corpora::sample();
-}
+inline std::vector<fs::path> corpus_files() { return edsc::corpora::sample(); }
 
 inline std::string quote_arg(const std::string& s) {
   std::string out = "'";

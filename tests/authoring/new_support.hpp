@@ -48,9 +48,10 @@ class NewOptions : public scratch_test {
 
   // `edsc new` for a DeviceNet node (2 bytes in, 1 out) with `extra` options.
   new_run make(std::vector<std::string> extra, int in = 2, int out = 1) {
-    std::vector<std::string> args{"new", "--vendor", "65535", "--product-type", "7", "--product-code", "5",
-                                  "--name", "Node"};
-    if (std::find(extra.begin(), extra.end(), "--date") == extra.end()) args.insert(args.end(), {"--date", "01-02-2024"});
+    std::vector<std::string> args{"new", "--vendor", "65535", "--product-type", "7", "--product-code",
+                                  "5",   "--name",   "Node"};
+    if (std::find(extra.begin(), extra.end(), "--date") == extra.end())
+      args.insert(args.end(), {"--date", "01-02-2024"});
     for (auto& a : io_bytes(in, out)) args.push_back(std::move(a));
     for (auto& a : extra) args.push_back(std::move(a));
     return run(args);

@@ -19,8 +19,8 @@ const std::string head =
 TEST_F(Hints, FixIsSuggestedOnlyWhenItRepairsSomething) {
   // A stray word has no fix-it: `edsc fix` would change nothing.
   const auto stray = file("stray.eds", head + "        !oops\n");
-  for (const auto& cmd : std::vector<std::vector<std::string>>{{"fmt", stray.string()},
-                                                               {"diff", stray.string(), stray.string()}}) {
+  for (const auto& cmd :
+       std::vector<std::vector<std::string>>{{"fmt", stray.string()}, {"diff", stray.string(), stray.string()}}) {
     const auto r = edsc(cmd);
     EXPECT_EQ(r.status, cmd[0] == "fmt" ? 1 : 2) << r.output;
     EXPECT_NE(r.output.find("syntax-stray"), std::string::npos) << r.output;
@@ -28,8 +28,8 @@ TEST_F(Hints, FixIsSuggestedOnlyWhenItRepairsSomething) {
   }
   // A missing ';' has one, and fix does repair it.
   const auto semi = file("semi.eds", head + "[Device Classification]\n        Class1 = EtherNetIP\n");
-  for (const auto& cmd : std::vector<std::vector<std::string>>{{"fmt", semi.string()},
-                                                               {"diff", semi.string(), semi.string()}}) {
+  for (const auto& cmd :
+       std::vector<std::vector<std::string>>{{"fmt", semi.string()}, {"diff", semi.string(), semi.string()}}) {
     const auto r = edsc(cmd);
     EXPECT_NE(r.output.find("edsc fix"), std::string::npos) << r.output;
   }
@@ -66,7 +66,8 @@ struct located {
 located first_finding(const std::string& output) {
   std::smatch m;
   located l;
-  if (std::regex_search(output, m, std::regex(R"(([^\n]+):(\d+):\d+: (?:error|warning|note): [^\n]*\n +\d+ \| ([^\n]*))")))
+  if (std::regex_search(output, m,
+                        std::regex(R"(([^\n]+):(\d+):\d+: (?:error|warning|note): [^\n]*\n +\d+ \| ([^\n]*))")))
     l = {m[1].str(), std::stoi(m[2].str()), m[3].str()};
   return l;
 }
@@ -82,7 +83,8 @@ TEST_F(Hints, EditFindingsNameTheTextTheyQuote) {
   const auto out = dir_ / "out.eds";
   // The removed entry moves MajRev up a line: the finding about it is in the
   // edited text, which is the output's, not the input's.
-  auto r = edsc({"edit", in.string(), "--remove-entry", "File.HomeURL", "--set", "Device.MajRev=0", "-o", out.string()});
+  auto r =
+      edsc({"edit", in.string(), "--remove-entry", "File.HomeURL", "--set", "Device.MajRev=0", "-o", out.string()});
   EXPECT_EQ(r.status, 0) << r.output;
   auto f = first_finding(r.output);
   EXPECT_EQ(f.path, out.string()) << r.output;

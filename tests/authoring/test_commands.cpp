@@ -30,8 +30,7 @@ TEST_F(Authoring, FixRepairsTheExcerptAndIsIdempotent) {
   const auto twice = dir_ / "twice.eds";
   auto r = edsc({"fix", excerpt.string(), "-o", once.string()});
   EXPECT_EQ(r.status, 0) << r.output;
-  EXPECT_NE(r.output.find("rightsight_excerpt.eds:12:44: fixed: insert ',' [syntax-missing-comma]"),
-            std::string::npos)
+  EXPECT_NE(r.output.find("rightsight_excerpt.eds:12:44: fixed: insert ',' [syntax-missing-comma]"), std::string::npos)
       << r.output;
   EXPECT_NE(r.output.find("[unknown-keyword]"), std::string::npos) << "what it could not fix: " << r.output;
   EXPECT_NE(r.output.find("1 fix applied, 1 finding left"), std::string::npos) << r.output;
@@ -148,10 +147,10 @@ TEST_F(Authoring, ThreeByteRightSightIsRegeneratedByItsScript) {
 }
 
 TEST_F(Authoring, NodeFilesAreRegeneratedByTheirScript) {
-  const auto r = run_shell("EDSC=" + quote_arg(EDSC_BINARY) + " " +
-                               quote_arg((project / "scripts" / "make-eds-nodes").string()) + " " +
-                               quote_arg((dir_ / "nodes").string()),
-                           dir_);
+  const auto r =
+      run_shell("EDSC=" + quote_arg(EDSC_BINARY) + " " + quote_arg((project / "scripts" / "make-eds-nodes").string()) +
+                    " " + quote_arg((dir_ / "nodes").string()),
+                dir_);
   ASSERT_EQ(r.status, 0) << r.output;
   for (const auto* f : {"temperature.eds", "discrete.eds", "level.eds"}) {
     SCOPED_TRACE(f);
@@ -167,8 +166,8 @@ TEST_F(Authoring, NewFromJsonMatchesTheFlags) {
   const auto b = dir_ / "b.eds";
   auto r = edsc({"new", "--from", json.string(), "-o", a.string()});
   ASSERT_EQ(r.status, 0) << r.output;
-  r = edsc({"new", "--vendor", "65535", "--product-type", "100", "--product-code", "9", "--name", "Gadget",
-            "--network", "ethernetip", "--input-bytes", "4", "--output-bytes", "2", "--date", "01-02-2024", "-o", b.string()});
+  r = edsc({"new", "--vendor", "65535", "--product-type", "100", "--product-code", "9", "--name", "Gadget", "--network",
+            "ethernetip", "--input-bytes", "4", "--output-bytes", "2", "--date", "01-02-2024", "-o", b.string()});
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_EQ(read_bytes(a), read_bytes(b));
   // Not only the same as the flags: the values the JSON gives, where the
@@ -193,9 +192,9 @@ TEST_F(Authoring, NewDeviceNetVariantsCheckClean) {
   for (const auto& conns : {"poll", "cos", "poll,strobe,cos", "cyclic,poll", "strobe"}) {
     SCOPED_TRACE(conns);
     const auto out = dir_ / "n.eds";
-    auto r = edsc({"new", "--vendor", "65535", "--product-type", "7", "--product-code", "5", "--name", "N",
-                   "--input-bytes", "2", "--output-bytes", "1", "--connections", conns, "--date", "01-02-2024", "-o",
-                   out.string()});
+    auto r =
+        edsc({"new", "--vendor", "65535", "--product-type", "7", "--product-code", "5", "--name", "N", "--input-bytes",
+              "2", "--output-bytes", "1", "--connections", conns, "--date", "01-02-2024", "-o", out.string()});
     ASSERT_EQ(r.status, 0) << r.output;
     r = edsc({"check", out.string()});
     EXPECT_EQ(r.status, 0) << r.output;

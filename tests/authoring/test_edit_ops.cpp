@@ -76,8 +76,10 @@ TEST(EditOps, AddAndRemoveEntriesAndSections) {
   ed.add_section("device classification");
   ed.add_entry("Device Classification.class1=DeviceNet");
   const auto text = ed.text();
-  EXPECT_NE(text.find("    MinRev = 4;\n    VendCode = 65535;\n\n[Device Classification]\n    Class1 = DeviceNet;\n[IO_Info]"),
-            std::string::npos)
+  EXPECT_NE(
+      text.find(
+          "    MinRev = 4;\n    VendCode = 65535;\n\n[Device Classification]\n    Class1 = DeviceNet;\n[IO_Info]"),
+      std::string::npos)
       << text;
   ed.remove_entry("File.DescText");
   ed.remove_section("Device Classification");
@@ -188,8 +190,10 @@ TEST(EditOps, AByteOrderMarkStaysInFront) {
     for (const auto& mark : {std::string(), bom}) {
       SCOPED_TRACE(before + op + std::to_string(mark.size()));
       editor ed("t.eds", mark + before);
-      if (op == "add") ed.add_section("Extra");
-      else ed.remove_section("File");
+      if (op == "add")
+        ed.add_section("Extra");
+      else
+        ed.remove_section("File");
       EXPECT_EQ(ed.text(), mark + after);
     }
   }

@@ -92,7 +92,8 @@ TEST_F(NewOptions, TheOverrideTableCoversEveryOption) {
 
 // A template without the required identity: the command line may give it.
 TEST_F(NewOptions, RequiredKeysMayComeFromTheCommandLine) {
-  const auto json = file("family.json", R"({"vendor": 4660, "product_type": 7, "input_bytes": 1, "date": "01-02-2024"})");
+  const auto json =
+      file("family.json", R"({"vendor": 4660, "product_type": 7, "input_bytes": 1, "date": "01-02-2024"})");
   auto r = run({"new", "--from", json.string(), "--product-code", "3", "--name", "Member"});
   ASSERT_EQ(r.status, 0) << r.err;
   expect_values(r.out, {{"VendCode", "4660"}, {"ProdCode", "3"}, {"ProdName", "\"Member\""}});
@@ -124,11 +125,11 @@ TEST_F(NewOptions, MessagesNameTheCurrentOptions) {
   const std::vector<std::pair<new_run, std::string>> runs{
       {make({}, 0, 0), "--input-bytes"},
       {make({"--network", "ethernetip"}, 4, 0), "--output-bytes"},
-      {run({"new", "--vendor", "1", "--product-type", "8", "--product-code", "1", "--name", "X", "--date",
-            "01-02-2024", "--input-bytes", "1"}),
+      {run({"new", "--vendor", "1", "--product-type", "8", "--product-code", "1", "--name", "X", "--date", "01-02-2024",
+            "--input-bytes", "1"}),
        "--product-type-name"},
-      {run({"new", "--vendor", "1", "--product-type", "7", "--product-code", "1", "--name", "", "--date",
-            "01-02-2024", "--input-bytes", "1"}),
+      {run({"new", "--vendor", "1", "--product-type", "7", "--product-code", "1", "--name", "", "--date", "01-02-2024",
+            "--input-bytes", "1"}),
        "--name"},
       {run({"new", "--product-type", "7", "--product-code", "1", "--name", "X"}), "--vendor"},
       {run({"new", "--from", no_name}), "--name"},

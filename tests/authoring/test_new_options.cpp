@@ -16,25 +16,25 @@ TEST_F(NewOptions, DefaultsOfTheIdentity) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err, "");
   expect_values(r.out, {
-      {"DescText", "\"Node EDS file\""},
-      {"VendCode", "65535"},
-      {"VendName", "\"Vendor 65535\""},
-      {"ProdType", "7"},
-      {"ProdTypeStr", "\"General Purpose Discrete I/O\""},
-      {"ProdCode", "5"},
-      {"MajRev", "1"},
-      {"MinRev", "1"},
-      {"ProdName", "\"Node\""},
-  });
+                           {"DescText", "\"Node EDS file\""},
+                           {"VendCode", "65535"},
+                           {"VendName", "\"Vendor 65535\""},
+                           {"ProdType", "7"},
+                           {"ProdTypeStr", "\"General Purpose Discrete I/O\""},
+                           {"ProdCode", "5"},
+                           {"MajRev", "1"},
+                           {"MinRev", "1"},
+                           {"ProdName", "\"Node\""},
+                       });
   EXPECT_EQ(fields(r.out, "Catalog"), strings{});  // none unless asked for
   // --date without --time: midnight, the same for creation and modification.
   expect_values(r.out, {
-      {"CreateDate", "01-02-2024"},
-      {"CreateTime", "00:00:00"},
-      {"ModDate", "01-02-2024"},
-      {"ModTime", "00:00:00"},
-      {"Class1", "DeviceNet"},
-  });
+                           {"CreateDate", "01-02-2024"},
+                           {"CreateTime", "00:00:00"},
+                           {"ModDate", "01-02-2024"},
+                           {"ModTime", "00:00:00"},
+                           {"Class1", "DeviceNet"},
+                       });
   EXPECT_EQ(r.out.find('\r'), std::string::npos);  // --eol lf by default
 }
 
@@ -43,18 +43,18 @@ TEST_F(NewOptions, IdentityTextOptions) {
                        "--description", "A test node", "--revision", "2.7"});
   ASSERT_EQ(r.status, 0) << r.err;
   expect_values(r.out, {
-      {"VendName", "\"Acme Corp\""},
-      {"ProdTypeStr", "\"Widget\""},
-      {"Catalog", "\"AC-1\""},
-      {"DescText", "\"A test node\""},
-      {"MajRev", "2"},
-      {"MinRev", "7"},
-  });
+                           {"VendName", "\"Acme Corp\""},
+                           {"ProdTypeStr", "\"Widget\""},
+                           {"Catalog", "\"AC-1\""},
+                           {"DescText", "\"A test node\""},
+                           {"MajRev", "2"},
+                           {"MinRev", "7"},
+                       });
 }
 
 TEST_F(NewOptions, ProductTypeWithoutAUsualNameNeedsOne) {
-  auto r = run({"new", "--vendor", "1", "--product-type", "8", "--product-code", "1", "--name", "X", "--date",
-                "01-02-2024"});
+  auto r = run(
+      {"new", "--vendor", "1", "--product-type", "8", "--product-code", "1", "--name", "X", "--date", "01-02-2024"});
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("no usual name for product type 8; give --product-type-name"), std::string::npos) << r.err;
 }
@@ -79,15 +79,15 @@ TEST_F(NewOptions, RevisionLimits) {
 
 // Vendor, product type and product code are 16-bit: 65535 passes, 65536 not.
 TEST_F(NewOptions, IdentityNumbersAtSixteenBits) {
-  std::vector<std::string> top{"new", "--vendor", "65535", "--product-type", "100", "--product-code", "65535",
-                               "--name", "X", "--date", "01-02-2024"};
+  std::vector<std::string> top{"new",   "--vendor", "65535", "--product-type", "100",       "--product-code",
+                               "65535", "--name",   "X",     "--date",         "01-02-2024"};
   for (auto& a : io_bytes(1, 0)) top.push_back(a);
   auto r = run(top);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(fields(r.out, "ProdCode"), strings{"65535"});
   for (const char* which : {"--vendor", "--product-type", "--product-code"}) {
-    std::vector<std::string> args{"new", "--vendor", "1", "--product-type", "100", "--product-code", "1",
-                                  "--name", "X", "--date", "01-02-2024"};
+    std::vector<std::string> args{"new", "--vendor", "1", "--product-type", "100",       "--product-code",
+                                  "1",   "--name",   "X", "--date",         "01-02-2024"};
     for (std::size_t i = 0; i < args.size(); ++i)
       if (args[i] == which) args[i + 1] = "65536";
     for (auto& a : io_bytes(1, 0)) args.push_back(a);
@@ -102,11 +102,11 @@ TEST_F(NewOptions, DateAndTime) {
   auto r = make({"--date", "12-31-2023", "--time", "23:59:59"});
   ASSERT_EQ(r.status, 0) << r.err;
   expect_values(r.out, {
-      {"CreateDate", "12-31-2023"},
-      {"CreateTime", "23:59:59"},
-      {"ModDate", "12-31-2023"},
-      {"ModTime", "23:59:59"},
-  });
+                           {"CreateDate", "12-31-2023"},
+                           {"CreateTime", "23:59:59"},
+                           {"ModDate", "12-31-2023"},
+                           {"ModTime", "23:59:59"},
+                       });
   // Calendar limits: 29 February in a leap year only, 30 days in April.
   r = make({"--date", "02-29-2024"});
   EXPECT_EQ(r.status, 0) << r.err;
@@ -231,18 +231,18 @@ TEST_F(NewOptions, JsonKeysGiveTheEntriesOfTheirOptions) {
   const auto r = run({"new", "--from", json.string()});
   ASSERT_EQ(r.status, 0) << r.err;
   expect_values(r.out, {
-      {"VendCode", "4660"},
-      {"VendName", "\"Acme\""},
-      {"ProdType", "12"},
-      {"ProdTypeStr", "\"Adapter\""},
-      {"ProdCode", "77"},
-      {"ProdName", "\"Gizmo\""},
-      {"Catalog", "\"G-77\""},
-      {"DescText", "\"Gizmo file\""},
-      {"MajRev", "3"},
-      {"MinRev", "4"},
-      {"Class1", "DeviceNet"},
-  });
+                           {"VendCode", "4660"},
+                           {"VendName", "\"Acme\""},
+                           {"ProdType", "12"},
+                           {"ProdTypeStr", "\"Adapter\""},
+                           {"ProdCode", "77"},
+                           {"ProdName", "\"Gizmo\""},
+                           {"Catalog", "\"G-77\""},
+                           {"DescText", "\"Gizmo file\""},
+                           {"MajRev", "3"},
+                           {"MinRev", "4"},
+                           {"Class1", "DeviceNet"},
+                       });
   EXPECT_EQ(fields(r.out, "Default"), strings{"0x0004"});  // cos first
   EXPECT_EQ(fields(r.out, "COSInfo"), (strings{"0x0005", "1", "1"}));
   EXPECT_EQ(fields(r.out, "Input1"),
@@ -257,7 +257,8 @@ TEST_F(NewOptions, JsonKeysGiveTheEntriesOfTheirOptions) {
   EXPECT_EQ(fields(pinned.out, "CreateDate"), strings{"01-01-2020"});
   EXPECT_EQ(fields(pinned.out, "ModTime"), strings{"01:02:03"});
   // A required key missing, a key of the wrong type.
-  auto bad = run({"new", "--from", file("no-name.json", R"({"vendor": 1, "product_type": 7, "product_code": 1})").string()});
+  auto bad =
+      run({"new", "--from", file("no-name.json", R"({"vendor": 1, "product_type": 7, "product_code": 1})").string()});
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.err.find("device JSON: 'name' is required"), std::string::npos) << bad.err;
   bad = run({"new", "--from",

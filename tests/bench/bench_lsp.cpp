@@ -50,20 +50,24 @@ void typing(benchmark::State& state, const std::string& path) {
     published += body.find("textDocument/publishDiagnostics") != std::string::npos ? 1 : 0;
   });
   const std::string uri = "file:///bench.eds";
-  srv.handle(message({{"jsonrpc", "2.0"}, {"id", 1}, {"method", "initialize"}, {"params", {{"capabilities", json::object()}}}}));
+  srv.handle(message(
+      {{"jsonrpc", "2.0"}, {"id", 1}, {"method", "initialize"}, {"params", {{"capabilities", json::object()}}}}));
   srv.handle(message({{"jsonrpc", "2.0"}, {"method", "initialized"}, {"params", json::object()}}));
-  srv.handle(message({{"jsonrpc", "2.0"},
-                      {"method", "textDocument/didOpen"},
-                      {"params", {{"textDocument", {{"uri", uri}, {"languageId", "eds"}, {"version", 1}, {"text", text}}}}}}));
+  srv.handle(
+      message({{"jsonrpc", "2.0"},
+               {"method", "textDocument/didOpen"},
+               {"params", {{"textDocument", {{"uri", uri}, {"languageId", "eds"}, {"version", 1}, {"text", text}}}}}}));
   srv.idle();
   const auto line = std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(text.size() / 2), '\n');
   auto change = [&](int version) {
     const bool insert = version % 2 == 0;
-    json c{{"range", {{"start", {{"line", line}, {"character", 0}}}, {"end", {{"line", line}, {"character", insert ? 0 : 1}}}}},
+    json c{{"range",
+            {{"start", {{"line", line}, {"character", 0}}}, {"end", {{"line", line}, {"character", insert ? 0 : 1}}}}},
            {"text", insert ? " " : ""}};
-    return message({{"jsonrpc", "2.0"},
-                    {"method", "textDocument/didChange"},
-                    {"params", {{"textDocument", {{"uri", uri}, {"version", version}}}, {"contentChanges", json::array({c})}}}});
+    return message(
+        {{"jsonrpc", "2.0"},
+         {"method", "textDocument/didChange"},
+         {"params", {{"textDocument", {{"uri", uri}, {"version", version}}}, {"contentChanges", json::array({c})}}}});
   };
   // Wall time is what the user waits; CPU time of this thread is the same
   // work without the other processes of a shared machine.

@@ -49,7 +49,8 @@ const fixture& file() {
     const auto mid = text.find("Param", text.find("[Params]") + text.size() / 3);
     x.param_decl = static_cast<std::uint32_t>(mid);
     x.field = static_cast<std::uint32_t>(text.find("0x", mid) + 1);
-    const auto ref = text.find("Param", text.find("[Assembly]") == std::string_view::npos ? mid + 1 : text.find("[Assembly]"));
+    const auto ref =
+        text.find("Param", text.find("[Assembly]") == std::string_view::npos ? mid + 1 : text.find("[Assembly]"));
     x.param_ref = static_cast<std::uint32_t>(ref == std::string_view::npos ? mid : ref);
     x.blank_line = static_cast<std::uint32_t>(text.find(";\n", mid) + 2);  // between two entries
     return x;
@@ -59,9 +60,13 @@ const fixture& file() {
 
 // How much an answer holds, so a benchmark that found nothing shows it.
 template <class T>
-std::size_t count(const std::vector<T>& v) { return v.size(); }
+std::size_t count(const std::vector<T>& v) {
+  return v.size();
+}
 template <class T>
-std::size_t count(const std::optional<T>& v) { return v ? 1 : 0; }
+std::size_t count(const std::optional<T>& v) {
+  return v ? 1 : 0;
+}
 std::size_t count(const edsc::lsp::rename_result& r) { return r.edits.size(); }
 
 template <class F>
@@ -76,14 +81,30 @@ void run(benchmark::State& state, F f) {
   state.counters["answers"] = static_cast<double>(count(f(*x.a, x)));
 }
 
-void hover_field(benchmark::State& s) { run(s, [](auto& a, auto& x) { return edsc::lsp::hover(a, x.field); }); }
-void hover_reference(benchmark::State& s) { run(s, [](auto& a, auto& x) { return edsc::lsp::hover(a, x.param_ref); }); }
-void definition(benchmark::State& s) { run(s, [](auto& a, auto& x) { return edsc::lsp::definition(a, x.param_ref); }); }
-void references(benchmark::State& s) { run(s, [](auto& a, auto& x) { return edsc::lsp::references(a, x.param_decl, true); }); }
-void symbols(benchmark::State& s) { run(s, [](auto& a, auto&) { return edsc::lsp::document_symbols(a); }); }
-void complete_keyword(benchmark::State& s) { run(s, [](auto& a, auto& x) { return edsc::lsp::complete(a, x.blank_line); }); }
-void prepare_rename(benchmark::State& s) { run(s, [](auto& a, auto& x) { return edsc::lsp::prepare_rename(a, x.param_decl); }); }
-void rename(benchmark::State& s) { run(s, [](auto& a, auto& x) { return edsc::lsp::rename(a, x.param_decl, "Param60000"); }); }
+void hover_field(benchmark::State& s) {
+  run(s, [](auto& a, auto& x) { return edsc::lsp::hover(a, x.field); });
+}
+void hover_reference(benchmark::State& s) {
+  run(s, [](auto& a, auto& x) { return edsc::lsp::hover(a, x.param_ref); });
+}
+void definition(benchmark::State& s) {
+  run(s, [](auto& a, auto& x) { return edsc::lsp::definition(a, x.param_ref); });
+}
+void references(benchmark::State& s) {
+  run(s, [](auto& a, auto& x) { return edsc::lsp::references(a, x.param_decl, true); });
+}
+void symbols(benchmark::State& s) {
+  run(s, [](auto& a, auto&) { return edsc::lsp::document_symbols(a); });
+}
+void complete_keyword(benchmark::State& s) {
+  run(s, [](auto& a, auto& x) { return edsc::lsp::complete(a, x.blank_line); });
+}
+void prepare_rename(benchmark::State& s) {
+  run(s, [](auto& a, auto& x) { return edsc::lsp::prepare_rename(a, x.param_decl); });
+}
+void rename(benchmark::State& s) {
+  run(s, [](auto& a, auto& x) { return edsc::lsp::rename(a, x.param_decl, "Param60000"); });
+}
 
 BENCHMARK(hover_field)->Unit(benchmark::kMicrosecond);
 BENCHMARK(hover_reference)->Unit(benchmark::kMicrosecond);

@@ -140,8 +140,8 @@ void register_all(const std::vector<input_set>& sets) {
               }
               run(set, files);
             }
-            state.counters["MB/s"] = benchmark::Counter(static_cast<double>(set.bytes) / 1e6,
-                                                        benchmark::Counter::kIsIterationInvariantRate);
+            state.counters["MB/s"] =
+                benchmark::Counter(static_cast<double>(set.bytes) / 1e6, benchmark::Counter::kIsIterationInvariantRate);
             state.counters["files/s"] = benchmark::Counter(static_cast<double>(set.paths.size()),
                                                            benchmark::Counter::kIsIterationInvariantRate);
           });

@@ -18,11 +18,12 @@ std::string full_network() {
   const std::string eds = EDSC_BENCH_PROJECT_DIR "/eds/";
   const char* files[] = {"rightsight-42ef-3byte.eds", "rightsight-42ef-diffuse.eds", "nodes/temperature.eds",
                          "nodes/discrete.eds", "nodes/level.eds"};
-  std::string t = "[network]\nkind = \"devicenet\"\nname = \"full\"\nbaud = 125\n\n[scanner]\nprofile = \"1769-SDN\"\n"
-                  "mac = 0\nslot = 5\nalignment = \"byte\"\n";
+  std::string t =
+      "[network]\nkind = \"devicenet\"\nname = \"full\"\nbaud = 125\n\n[scanner]\nprofile = \"1769-SDN\"\n"
+      "mac = 0\nslot = 5\nalignment = \"byte\"\n";
   for (unsigned mac = 1; mac <= 63; ++mac)
-    t += fmt::format("\n[[node]]\nmac = {}\nname = \"node{}\"\neds = \"{}{}\"\nconnections = [\"cos\"]\n", mac, mac, eds,
-                     files[mac % 5]);
+    t += fmt::format("\n[[node]]\nmac = {}\nname = \"node{}\"\neds = \"{}{}\"\nconnections = [\"cos\"]\n", mac, mac,
+                     eds, files[mac % 5]);
   return t;
 }
 

@@ -34,9 +34,8 @@ std::vector<input_set> find_inputs(const std::string& corpus_dir, const std::str
     }
     std::sort(files.begin(), files.end());
     if (!files.empty()) {
-      const auto largest = *std::max_element(files.begin(), files.end(), [](const auto& a, const auto& b) {
-        return fs::file_size(a) < fs::file_size(b);
-      });
+      const auto largest = *std::max_element(
+          files.begin(), files.end(), [](const auto& a, const auto& b) { return fs::file_size(a) < fs::file_size(b); });
       sets.push_back({"corpus", files, total_size(files)});
       sets.push_back({"largest", {largest}, total_size({largest})});
     }

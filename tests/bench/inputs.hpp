@@ -21,8 +21,7 @@ struct input_set {
 
 // Finds the input sets present on this machine; missing folders or files are
 // skipped (the 100 MB file only exists after `ninja edsc_bench_data_100mb`).
-[[nodiscard]] std::vector<input_set> find_inputs(const std::string& corpus_dir,
-                                                 const std::string& data_dir);
+[[nodiscard]] std::vector<input_set> find_inputs(const std::string& corpus_dir, const std::string& data_dir);
 
 // One file taken through the front end once, so each stage can be timed on
 // exactly the input it sees in the real pipeline. Heap-held: the tree and the

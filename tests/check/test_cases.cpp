@@ -54,9 +54,13 @@ TEST_P(check_case, diagnostics_match_expectations) {
 
 INSTANTIATE_TEST_SUITE_P(cases, check_case, ::testing::ValuesIn(case_files()),
                          [](const ::testing::TestParamInfo<std::string>& info) {
-                           auto name = fs::path(info.param).lexically_relative(
-                                           fs::path(EDSC_TESTS_DIR) / "check" / "cases").replace_extension().string();
-                           std::replace_if(name.begin(), name.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
+                           auto name = fs::path(info.param)
+                                           .lexically_relative(fs::path(EDSC_TESTS_DIR) / "check" / "cases")
+                                           .replace_extension()
+                                           .string();
+                           std::replace_if(
+                               name.begin(), name.end(),
+                               [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
                            return name;
                          });
 
@@ -91,25 +95,64 @@ TEST(check_cases, every_rule_has_a_triggering_case) {
   const std::set<std::string_view> elsewhere{
       "syntax-too-many-errors",  // 1000 errors: tests/grammar/test_recovery.cpp
       "input-nul-byte",          // a NUL byte: tests/grammar/test_recovery.cpp
-      "input-utf16", "input-utf32", "input-binary",  // binary inputs: the same file
+      "input-utf16",
+      "input-utf32",
+      "input-binary",  // binary inputs: the same file
       // Answers on the bus, not EDS text: tests/verify/test_verify.cpp.
-      "verify-identity-mismatch", "verify-minor-revision", "verify-product-name", "verify-connection-size",
-      "verify-connection-not-in-eds", "verify-connection-missing", "verify-io-length", "verify-undecodable",
-      "verify-log-line", "verify-no-node",
+      "verify-identity-mismatch",
+      "verify-minor-revision",
+      "verify-product-name",
+      "verify-connection-size",
+      "verify-connection-not-in-eds",
+      "verify-connection-missing",
+      "verify-io-length",
+      "verify-undecodable",
+      "verify-log-line",
+      "verify-no-node",
       // Network files (TOML) and captures against them: tests/network/.
-      "net-syntax", "net-key-missing", "net-key-type", "net-key-unknown", "net-kind-unsupported",
-      "net-profile-unknown", "net-mac-range", "net-mac-duplicate", "net-eds-unreadable", "net-eds-errors",
-      "net-node-without-eds", "net-connection-not-offered", "net-connection-conflict", "net-size-not-allowed",
-      "net-image-overflow", "net-placement-overlap", "net-length-over-limit", "net-identity-duplicate",
-      "verify-net-missing", "verify-net-unknown", "verify-net-identity", "verify-net-io-length",
+      "net-syntax",
+      "net-key-missing",
+      "net-key-type",
+      "net-key-unknown",
+      "net-kind-unsupported",
+      "net-profile-unknown",
+      "net-mac-range",
+      "net-mac-duplicate",
+      "net-eds-unreadable",
+      "net-eds-errors",
+      "net-node-without-eds",
+      "net-connection-not-offered",
+      "net-connection-conflict",
+      "net-size-not-allowed",
+      "net-image-overflow",
+      "net-placement-overlap",
+      "net-length-over-limit",
+      "net-identity-duplicate",
+      "verify-net-missing",
+      "verify-net-unknown",
+      "verify-net-identity",
+      "verify-net-io-length",
       // A live EtherNet/IP device's answers: tests/live/ (OpENer, and a hostile server).
-      "live-identity", "live-minor-revision", "live-product-name", "live-assembly-size", "live-assembly-missing",
-      "live-connection-refused", "live-io-frames", "live-io-rate", "live-not-checked",
+      "live-identity",
+      "live-minor-revision",
+      "live-product-name",
+      "live-assembly-size",
+      "live-assembly-missing",
+      "live-connection-refused",
+      "live-io-frames",
+      "live-io-rate",
+      "live-not-checked",
       // What OpENer cannot serve (`edsc header --stack opener`): tests/stack/ and scripts/opener-coverage.
-      "opener-connection-kind", "opener-connection-path", "opener-assembly-size", "opener-run-idle",
+      "opener-connection-kind",
+      "opener-connection-path",
+      "opener-assembly-size",
+      "opener-run-idle",
       "opener-no-connection",
       // `edsc sim`'s --inputs files and control lines: tests/sim/test_sim_inputs.cpp.
-      "sim-inputs-syntax", "sim-inputs-unknown-assembly", "sim-inputs-unknown-field", "sim-inputs-value-range",
+      "sim-inputs-syntax",
+      "sim-inputs-unknown-assembly",
+      "sim-inputs-unknown-field",
+      "sim-inputs-value-range",
       "sim-inputs-hex",
   };
   std::set<std::string_view> seen;

@@ -124,8 +124,8 @@ TEST(golden_review, every_error_and_warning_needs_its_own_review) {
       body);
   EXPECT_EQ(wrong_rule.size(), 2u);  // the error unreviewed, the review stale
   // A review needs a reason; a malformed one is reported.
-  EXPECT_EQ(review_problems("# review 5:3 param-default-range: ok\n# review 7:1 prodname-too-long: 40 characters long\n",
-                            body),
+  EXPECT_EQ(review_problems(
+                "# review 5:3 param-default-range: ok\n# review 7:1 prodname-too-long: 40 characters long\n", body),
             std::vector<std::string>{"review without a reason: # review 5:3 param-default-range: ok"});
   EXPECT_EQ(review_problems("# review 5:3: forgot the rule id\n", "").size(), 1u);
   // A body of notes only needs nothing; the old header words do not count.

@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "time_scale.hpp"
 #include "test_paths.hpp"
+#include "time_scale.hpp"
 
 extern char** environ;
 
@@ -33,7 +33,7 @@ inline constexpr const char* kh_ko = "kh-ko__NVM__eds_sample.txt.eds";
 inline constexpr const char* fanuc = "rossmann-engineering__EEIP.NET__fanucrobot0202.eds";
 
 struct run_result {
-  int status = -1;  // exit status; 128 + signal when killed by one
+  int status = -1;     // exit status; 128 + signal when killed by one
   std::string output;  // stdout and stderr, interleaved
   std::chrono::milliseconds took{};
   bool timed_out = false;
@@ -54,8 +54,10 @@ inline run_result run_edsc_with_input(const std::vector<std::string>& args, cons
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);
   posix_spawn_file_actions_adddup2(&actions, fds[1], STDERR_FILENO);
-  if (input != nullptr) posix_spawn_file_actions_adddup2(&actions, in[0], STDIN_FILENO);
-  else posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  if (input != nullptr)
+    posix_spawn_file_actions_adddup2(&actions, in[0], STDIN_FILENO);
+  else
+    posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
   std::vector<std::string> argv_s{EDSC_BINARY};
   argv_s.insert(argv_s.end(), args.begin(), args.end());
   std::vector<char*> argv;
@@ -89,7 +91,8 @@ inline run_result run_edsc_with_input(const std::vector<std::string>& args, cons
   const auto deadline = start + edsc::test_time::scaled(limit);
   char buf[65536];
   for (;;) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
     if (left <= 0ms) {
       r.timed_out = true;
       ::kill(pid, SIGKILL);

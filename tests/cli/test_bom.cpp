@@ -82,7 +82,8 @@ TEST_F(ByteOrderMark, ReadingCommandsAnswerAsWithoutIt) {
     expect_same(*text, {"fmt", "--check", "IN"});
   }
   const auto [plain, marked] = both(findings_eds, {"check", "IN", "--color", "never"});
-  EXPECT_NE(plain.output.find("dev.eds:1:22: error: expected ';' at the end of entry"), std::string::npos) << plain.output;
+  EXPECT_NE(plain.output.find("dev.eds:1:22: error: expected ';' at the end of entry"), std::string::npos)
+      << plain.output;
   EXPECT_NE(plain.output.find("dev.eds:8:63: error: expected ','"), std::string::npos) << plain.output;
   EXPECT_EQ(marked.output.find(bom), std::string::npos) << "the mark is shown in a quoted line";
 }
@@ -124,8 +125,10 @@ TEST_F(ByteOrderMark, WritersKeepItInFront) {
       }
       EXPECT_EQ(results[1].status, results[0].status) << results[1].output;
       EXPECT_EQ(results[1].output, results[0].output);
-      if (written[0] != "(not written)") EXPECT_EQ(written[1], bom + written[0]);
-      else EXPECT_EQ(written[1], written[0]);
+      if (written[0] != "(not written)")
+        EXPECT_EQ(written[1], bom + written[0]);
+      else
+        EXPECT_EQ(written[1], written[0]);
     }
   }
 }

@@ -114,7 +114,8 @@ TEST_F(Cli, MaxErrorsLimitsWhatIsShownNotTheStatusOrCount) {
   std::size_t shown = 0;
   for (auto at = r.output.find(": error: "); at != std::string::npos; at = r.output.find(": error: ", at + 1)) ++shown;
   EXPECT_EQ(shown, 3u);
-  EXPECT_NE(r.output.find("19 errors, 0 warnings, 2 notes (16 not shown: --max-errors)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("19 errors, 0 warnings, 2 notes (16 not shown: --max-errors)"), std::string::npos)
+      << r.output;
 }
 
 TEST_F(Cli, NetworkOverrideChangesWhatIsExpected) {

@@ -29,9 +29,7 @@ TEST_F(Cli, NoSubcommandIsAUsageError) {
   EXPECT_FALSE(r.output.empty());
 }
 
-TEST_F(Cli, UnknownSubcommandIsAUsageError) {
-  EXPECT_EQ(run_edsc({"frobnicate"}).status, 2);
-}
+TEST_F(Cli, UnknownSubcommandIsAUsageError) { EXPECT_EQ(run_edsc({"frobnicate"}).status, 2); }
 
 // ---- check -----------------------------------------------------------------
 
@@ -131,7 +129,8 @@ TEST_F(Cli, HundredThousandNestedBraces) {
 }
 
 TEST_F(Cli, NulByte) {
-  const auto r = run_edsc({"check", "--color=never", file("nul.eds", std::string("[S]\nA = \"a\0b\";\n", 15)).string()});
+  const auto r =
+      run_edsc({"check", "--color=never", file("nul.eds", std::string("[S]\nA = \"a\0b\";\n", 15)).string()});
   expect_handled(r);
   EXPECT_NE(r.output.find("nul.eds:2:7: error:"), std::string::npos) << r.output;
 }

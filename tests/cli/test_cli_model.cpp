@@ -41,12 +41,12 @@ TEST(CliModel, KindsAreTheOnesRegistered) {
   std::map<std::string, std::string> kinds;
   for (const auto& o : all_options(cli_model())) kinds[o.where()] = o.kind();
   const std::vector<std::pair<std::string, std::string>> expected{
-      {"edsc fmt --output", "output"},       {"edsc probe --upload-eds", "output"}, {"edsc net map --output", "output"},
-      {"edsc header --output", "output"},    {"edsc doc --output", "output"},       {"edsc new --output", "output"},
-      {"edsc new --from", "json"},           {"edsc net map network", "toml"},      {"edsc verify --network", "toml"},
-      {"edsc rules id", "rule"},             {"edsc header --stack", "word"},       {"edsc dump --indent", "number"},
-      {"edsc probe host", "host"},           {"edsc probe --library", "dir"},       {"edsc check -W", "warning"},
-      {"edsc fmt --check", "none"},          {"edsc dump --json", "none"},          {"edsc sim --port", "number"},
+      {"edsc fmt --output", "output"},    {"edsc probe --upload-eds", "output"}, {"edsc net map --output", "output"},
+      {"edsc header --output", "output"}, {"edsc doc --output", "output"},       {"edsc new --output", "output"},
+      {"edsc new --from", "json"},        {"edsc net map network", "toml"},      {"edsc verify --network", "toml"},
+      {"edsc rules id", "rule"},          {"edsc header --stack", "word"},       {"edsc dump --indent", "number"},
+      {"edsc probe host", "host"},        {"edsc probe --library", "dir"},       {"edsc check -W", "warning"},
+      {"edsc fmt --check", "none"},       {"edsc dump --json", "none"},          {"edsc sim --port", "number"},
   };
   for (const auto& [where, kind] : expected) EXPECT_EQ(kinds[where], kind) << where;
 }
@@ -86,11 +86,31 @@ TEST(CliModel, EveryNumberRefusesItsExtremesInWords) {
   for (const auto& o : opts) {
     const auto& r = o.json.at("range");
     const double min = r.at("min"), max = r.at("max");
-    std::vector<std::string> tries{"0",      "-1",     "2147483647", "2147483648", "-2147483649", "4294967296",
-                                   "9223372036854775807", "9223372036854775808", "-9223372036854775809",
-                                   "18446744073709551616", "1e3", "0x", "0x10", "abc", "", "nan", "inf", "-inf",
-                                   "1.5", "010", fmt::format("{}", min), fmt::format("{}", max),
-                                   fmt::format("{}", min - 1), fmt::format("{}", max + 1), "30001"};
+    std::vector<std::string> tries{"0",
+                                   "-1",
+                                   "2147483647",
+                                   "2147483648",
+                                   "-2147483649",
+                                   "4294967296",
+                                   "9223372036854775807",
+                                   "9223372036854775808",
+                                   "-9223372036854775809",
+                                   "18446744073709551616",
+                                   "1e3",
+                                   "0x",
+                                   "0x10",
+                                   "abc",
+                                   "",
+                                   "nan",
+                                   "inf",
+                                   "-inf",
+                                   "1.5",
+                                   "010",
+                                   fmt::format("{}", min),
+                                   fmt::format("{}", max),
+                                   fmt::format("{}", min - 1),
+                                   fmt::format("{}", max + 1),
+                                   "30001"};
     for (const auto& v : tries) {
       auto args = words_of(o.command);
       args.push_back(o.spelling() + "=" + v);  // '=': a value that starts with '-' stays a value
@@ -108,7 +128,8 @@ TEST(CliModel, EveryNumberRefusesItsExtremesInWords) {
         EXPECT_NE(res.output.find(refusal), std::string::npos) << o.where() << "=" << v << "\n" << res.output;
         if (!v.empty()) {
           EXPECT_NE(res.output.find(fmt::format("from {} to {}", min, max)), std::string::npos)
-              << o.where() << "=" << v << "\n" << res.output;
+              << o.where() << "=" << v << "\n"
+              << res.output;
         }
       }
     }

@@ -80,7 +80,8 @@ TEST(CliReference, EveryCommandAndOptionOfHelpIsInCliMd) {
     for (const auto& opt : options) {
       // Named as an option: followed by a space, '=', a backtick or ']'.
       bool named = false;
-      for (const char after : {' ', '=', '`', ']', ','}) named = named || section.find(opt + after) != std::string::npos;
+      for (const char after : {' ', '=', '`', ']', ','})
+        named = named || section.find(opt + after) != std::string::npos;
       EXPECT_TRUE(named) << "docs/cli.md, section `edsc " << path << "`, does not name " << opt;
     }
   }

@@ -26,15 +26,14 @@ TEST_F(Cli, HelpOfEverySubcommandShowsChoicesAsWords) {
     // CLI11's renderings of a transformer, a member check and a range.
     for (const char* internal : {"ENUM", "->", "value in", ":{", "INT in ["}) {
       EXPECT_EQ(r.output.find(internal), std::string::npos) << cmd << " --help shows '" << internal << "':\n"
-                                                             << r.output;
+                                                            << r.output;
     }
   }
 }
 
 TEST_F(Cli, HelpNamesTheWordsOfEachChoice) {
   const std::vector<std::pair<std::string, std::vector<std::string>>> expected{
-      {"check",
-       {"--color auto|always|never", "--format text|json|sarif", "--network devicenet|ethernetip|controlnet"}},
+      {"check", {"--color auto|always|never", "--format text|json|sarif", "--network devicenet|ethernetip|controlnet"}},
       {"verify", {"--color auto|always|never", "--format text|json|sarif", "--mac 0..63"}},
       {"fmt", {"--eol lf|crlf"}},
       {"new", {"--network devicenet|ethernetip", "--eol lf|crlf"}},

@@ -94,10 +94,11 @@ TEST_F(Cli, SitePluralsAreRight) {
 
 // A network of one node of one byte: every count of the map in the singular.
 TEST_F(Cli, NetworkPluralsAreRight) {
-  const auto net = file("one.toml", "[network]\nkind = \"devicenet\"\nname = \"one\"\nbaud = 125\ncable = \"thin\"\n"
-                                    "[scanner]\nprofile = \"1769-SDN\"\nmac = 0\nslot = 5\n"
-                                    "[[node]]\nmac = 12\nname = \"panel\"\n"
-                                    "connections = [{ type = \"poll\", input = 1, output = 1 }]\n");
+  const auto net = file("one.toml",
+                        "[network]\nkind = \"devicenet\"\nname = \"one\"\nbaud = 125\ncable = \"thin\"\n"
+                        "[scanner]\nprofile = \"1769-SDN\"\nmac = 0\nslot = 5\n"
+                        "[[node]]\nmac = 12\nname = \"panel\"\n"
+                        "connections = [{ type = \"poll\", input = 1, output = 1 }]\n");
   auto r = run_edsc({"net", "map", net.string()});
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("; 1 node;"), std::string::npos) << r.output;
@@ -118,8 +119,8 @@ TEST_F(Cli, RefusedOptionsReadAsAList) {
 }
 
 TEST_F(Cli, NewTakesOutputLikeEveryCommand) {
-  const std::vector<std::string> base{"new", "--vendor", "65535", "--product-type", "7", "--product-code", "3",
-                                      "--name", "Node", "--date", "01-02-2024"};
+  const std::vector<std::string> base{"new", "--vendor", "65535", "--product-type", "7",         "--product-code",
+                                      "3",   "--name",   "Node",  "--date",         "01-02-2024"};
   auto args = base;
   for (const char* a : {"--input-bytes", "2", "--output-bytes", "1", "--output"}) args.push_back(a);
   args.push_back((dir_ / "a.eds").string());

@@ -75,7 +75,8 @@ zpty -d z
 
 // What `shell` completes for `line` (as typed, the last word being
 // completed) with the generated script, run in `cwd`: sorted, space-separated.
-std::string complete_with(const std::string& shell, const fs::path& script, const fs::path& cwd, const std::string& line) {
+std::string complete_with(const std::string& shell, const fs::path& script, const fs::path& cwd,
+                          const std::string& line) {
   std::string cmd;
   if (shell == "bash") {
     // bash's words: the line split at spaces, the last one empty when the line ends in one.
@@ -93,7 +94,8 @@ std::string complete_with(const std::string& shell, const fs::path& script, cons
   } else {
     cmd = "fish --no-config -c \"source '" + script.string() + "'; complete -C '" + line + "'\" | cut -f1";
   }
-  const std::string full = "cd '" + cwd.string() + "' && " + cmd + " | sed 's,/$,,' | LC_ALL=C sort -u | tr '\\n' ' ' > reply.txt";
+  const std::string full =
+      "cd '" + cwd.string() + "' && " + cmd + " | sed 's,/$,,' | LC_ALL=C sort -u | tr '\\n' ' ' > reply.txt";
   EXPECT_EQ(std::system(full.c_str()), 0) << full;
   return read_bytes(cwd / "reply.txt");
 }
@@ -127,10 +129,18 @@ TEST_F(Cli, EveryShellCompletesFilesAfterAFlag) {
   fs::create_directories(work / "lib");
   for (const char* f : {"a.eds", "plant.toml", "spec.json", "saved.txt"}) write_bytes(work / f, "");
   const std::vector<std::pair<std::string, std::string>> lines{
-      {"edsc fmt --check ", "a.eds"},    {"edsc fmt -i ", "a.eds"},        {"edsc edit --in-place ", "a.eds"},
-      {"edsc edit --force ", "a.eds"},   {"edsc fix -q ", "a.eds"},        {"edsc dump --json ", "a.eds"},
-      {"edsc header --stack ", "opener"}, {"edsc net map ", "plant.toml"}, {"edsc new --from ", "spec.json"},
-      {"edsc fmt a.eds --eol ", "crlf"},  {"edsc probe h --upload-eds ", "saved.txt"}, {"edsc probe h --library ", "lib"},
+      {"edsc fmt --check ", "a.eds"},
+      {"edsc fmt -i ", "a.eds"},
+      {"edsc edit --in-place ", "a.eds"},
+      {"edsc edit --force ", "a.eds"},
+      {"edsc fix -q ", "a.eds"},
+      {"edsc dump --json ", "a.eds"},
+      {"edsc header --stack ", "opener"},
+      {"edsc net map ", "plant.toml"},
+      {"edsc new --from ", "spec.json"},
+      {"edsc fmt a.eds --eol ", "crlf"},
+      {"edsc probe h --upload-eds ", "saved.txt"},
+      {"edsc probe h --library ", "lib"},
   };
   for (const std::string shell : {"bash", "zsh", "fish"}) {
     if (!installed(shell)) {
@@ -142,8 +152,8 @@ TEST_F(Cli, EveryShellCompletesFilesAfterAFlag) {
     const auto script = file("edsc." + shell, r.output);
     for (const auto& [line, offered] : lines) {
       const auto got = complete_with(shell, script, work, line);
-      EXPECT_NE((" " + got).find(" " + offered + " "), std::string::npos) << shell << ": '" << line << "' offers '"
-                                                                          << got << "'";
+      EXPECT_NE((" " + got).find(" " + offered + " "), std::string::npos)
+          << shell << ": '" << line << "' offers '" << got << "'";
     }
   }
 }
@@ -205,8 +215,9 @@ TEST_F(Cli, ManPagesPointAtTheRightPagesAndTheInstalledFiles) {
   const auto build_dir = fs::path(EDSC_BINARY).parent_path().parent_path();
   for (const auto& e : fs::directory_iterator(man)) {
     const auto text = read_bytes(e.path());
-    EXPECT_NE(text.find(".SH FILES\n.TP\n" + roff_path(std::string(EDSC_INSTALL_DOCDIR)) + "/\nThe user documentation.\n"),
-              std::string::npos)
+    EXPECT_NE(
+        text.find(".SH FILES\n.TP\n" + roff_path(std::string(EDSC_INSTALL_DOCDIR)) + "/\nThe user documentation.\n"),
+        std::string::npos)
         << e.path();
     EXPECT_EQ(text.find(roff_path(EDSC_PROJECT_DIR)), std::string::npos) << e.path();
     EXPECT_EQ(text.find(roff_path(build_dir.string())), std::string::npos) << e.path();

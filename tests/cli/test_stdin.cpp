@@ -116,8 +116,7 @@ TEST_F(Cli, HeaderReadsStandardInput) {
   const auto path = file("rightsight-42ef-3byte.eds", eds).string();
   const auto named = run_edsc({"header", path, "-o", "-"});
   ASSERT_EQ(named.status, 0) << named.output;
-  const auto piped =
-      run_edsc({"header", "--stdin-filename", "rightsight-42ef-3byte.eds", "-", "-o", "-"}, eds);
+  const auto piped = run_edsc({"header", "--stdin-filename", "rightsight-42ef-3byte.eds", "-", "-o", "-"}, eds);
   EXPECT_EQ(piped.status, 0) << piped.output;
   EXPECT_EQ(piped.output, named.output);
   // Without a name the include guard still is a valid identifier.

@@ -18,11 +18,24 @@ using namespace edsc::cli_test;
 
 // What the parser would say where edsc has not rewritten it.
 const std::vector<std::string> raw_texts{
-    "At Most ",          "At least ",          "required but received", " is required",
-    " excludes ",        " requires ",         "Could not convert",     "The following argument",
-    "A subcommand",      "not in range",       "required TEXT missing", "Should be true/false",
-    "too many inputs",   "flag override",      "Expected exactly",      "Expected at least",
-    "not an allowed value", "was not expected",
+    "At Most ",
+    "At least ",
+    "required but received",
+    " is required",
+    " excludes ",
+    " requires ",
+    "Could not convert",
+    "The following argument",
+    "A subcommand",
+    "not in range",
+    "required TEXT missing",
+    "Should be true/false",
+    "too many inputs",
+    "flag override",
+    "Expected exactly",
+    "Expected at least",
+    "not an allowed value",
+    "was not expected",
 };
 
 // "edsc dump x.eds", for messages. Appended piece by piece: GCC 12 warns
@@ -47,8 +60,9 @@ TEST(UsageErrors, EachKindIsSaidInEdscsWords) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
       // A positional, an option and a command that is missing.
       {{"dump"}, "edsc: error: dump needs input: the EDS file ('-': standard input)\n"},
-      {{"header", eds}, "edsc: error: header needs -o/--output: the header to write ('-' for standard output); "
-                        "with --stack, a folder\n"},
+      {{"header", eds},
+       "edsc: error: header needs -o/--output: the header to write ('-' for standard output); "
+       "with --stack, a folder\n"},
       {{"net"}, "edsc: error: net needs a command: check or map\n"},
       {{}, "edsc: error: edsc needs a command (edsc --help lists them)\n"},
       {{"new", "--vendor", "1", "--product-type", "2"}, "edsc: error: new needs --product-code (or --from)\n"},
@@ -103,7 +117,7 @@ TEST(UsageErrors, EveryOptionGivenWronglyIsSaidInEdscsWords) {
     for (const auto& j : c.at("options")) {
       const model_option o{path, j};
       if (o.positional()) continue;
-      const auto value = o.kind() == "word" ? j.at("choices").front().get<std::string>()
+      const auto value = o.kind() == "word"     ? j.at("choices").front().get<std::string>()
                          : o.kind() == "number" ? fmt::format("{}", j.at("range").at("min").get<double>())
                                                 : std::string("x");
       if (o.takes_value()) {

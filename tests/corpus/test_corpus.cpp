@@ -20,14 +20,10 @@ constexpr std::size_t corpus_size = edsc::corpora::file_count;
 constexpr const char* kh_ko = "kh-ko__NVM__eds_sample.txt.eds";
 constexpr const char* fanuc = "rossmann-engineering__EEIP.NET__fanucrobot0202.eds";
 
-std::vector<fs::path> corpus_files() {
-  return edsc::corpora::all_files();
-}
+std::vector<fs::path> corpus_files() { return edsc::corpora::all_files(); }
 
 // The files the engine-wide tests walk: all of them, a sample under ASan.
-std::vector<fs::path> engine_files() {
-  return edsc::corpora::sample();
-}
+std::vector<fs::path> engine_files() { return edsc::corpora::sample(); }
 
 std::string read_bytes(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -43,7 +39,8 @@ parsed parse_file(const fs::path& path) {
 }
 
 TEST(Corpus, HoldsEveryFile) {
-  ASSERT_GE(corpus_files().size(), corpus_size) << "corpus at " << EDSC_CORPUS_DIR << " or " << EDSC_CORPUS_ROCKWELL_DIR << " is incomplete";
+  ASSERT_GE(corpus_files().size(), corpus_size)
+      << "corpus at " << EDSC_CORPUS_DIR << " or " << EDSC_CORPUS_ROCKWELL_DIR << " is incomplete";
 }
 
 // Round trip and syntax of every file; the two broken ones are checked below.
@@ -109,17 +106,15 @@ using namespace std::string_literals;
 
 INSTANTIATE_TEST_SUITE_P(
     Corpus, RoundTrip,
-    ::testing::Values(
-        std::pair{"EmptyFile", ""s},
-        std::pair{"NoTrailingNewline", "[File]\nDescText = \"x\";"s},
-        std::pair{"NoTrailingNewlineAfterComment", "[File]\nA = 1; $ end"s},
-        std::pair{"CommentOnly", "$ nothing but a comment\n$ and another"s},
-        std::pair{"CrLfAndLfMixed", "[File]\r\nA = 1;\nB = 2;\r\n\r\n[Device]\nC = 3;\r\n"s},
-        std::pair{"DollarAndSemicolonInStrings", "[S]\nA = \"$ 5; [x] {y}\", \"a\\\";b\";\n"s},
-        std::pair{"CommentBetweenStringPieces", "[S]\nA = \"a\" $ one\n  $ two\n  \"b\";\n"s},
-        std::pair{"CommentBetweenValueAndComma", "[S]\nA = 1 $ why\n  , 2 $ because\n  ;\n"s},
-        std::pair{"NonAsciiBytes", "$ \xE9t\xE9\n[S]\nA = \"\xB5s \x92\xFF\", 10\xB0;\n"s},
-        std::pair{"BlanksEverywhere", "  \t[ S ]  \n\t A\t=\t{ 1 ,\t{ \"x\" } } \t;  \n"s}),
+    ::testing::Values(std::pair{"EmptyFile", ""s}, std::pair{"NoTrailingNewline", "[File]\nDescText = \"x\";"s},
+                      std::pair{"NoTrailingNewlineAfterComment", "[File]\nA = 1; $ end"s},
+                      std::pair{"CommentOnly", "$ nothing but a comment\n$ and another"s},
+                      std::pair{"CrLfAndLfMixed", "[File]\r\nA = 1;\nB = 2;\r\n\r\n[Device]\nC = 3;\r\n"s},
+                      std::pair{"DollarAndSemicolonInStrings", "[S]\nA = \"$ 5; [x] {y}\", \"a\\\";b\";\n"s},
+                      std::pair{"CommentBetweenStringPieces", "[S]\nA = \"a\" $ one\n  $ two\n  \"b\";\n"s},
+                      std::pair{"CommentBetweenValueAndComma", "[S]\nA = 1 $ why\n  , 2 $ because\n  ;\n"s},
+                      std::pair{"NonAsciiBytes", "$ \xE9t\xE9\n[S]\nA = \"\xB5s \x92\xFF\", 10\xB0;\n"s},
+                      std::pair{"BlanksEverywhere", "  \t[ S ]  \n\t A\t=\t{ 1 ,\t{ \"x\" } } \t;  \n"s}),
     [](const auto& info) { return std::string(info.param.first); });
 
 }  // namespace

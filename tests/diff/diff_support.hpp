@@ -42,14 +42,11 @@ struct compared {
     for (const auto& d : r.differences) out.push_back(d.kind);
     return out;
   }
-  [[nodiscard]] std::string dump() const {
-    return edsc::diff::render_text(r, *before, *after, {});
-  }
+  [[nodiscard]] std::string dump() const { return edsc::diff::render_text(r, *before, *after, {}); }
 };
 
-inline compared compare(const std::string& old_text, const std::string& new_text,
-                        const edsc::diff::options& opt = {}, const std::string& old_name = "old.eds",
-                        const std::string& new_name = "new.eds") {
+inline compared compare(const std::string& old_text, const std::string& new_text, const edsc::diff::options& opt = {},
+                        const std::string& old_name = "old.eds", const std::string& new_name = "new.eds") {
   compared c;
   c.before = edsc::edit::analyze(old_name, old_text);
   c.after = edsc::edit::analyze(new_name, new_text);

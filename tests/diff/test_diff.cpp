@@ -92,7 +92,8 @@ TEST(Diff, LayoutIsNoDifference) {
 // reported as two renumberings, not as removals and additions, and no data
 // moves in the assembly.
 TEST(Diff, RenumberedParametersAreMatchedByContent) {
-  auto swapped = replaced(device_eds, "Param1 = 0, , , 0x0000, 0xC7, 2, \"Speed\"", "Param9 = 0, , , 0x0000, 0xC7, 2, \"Speed\"");
+  auto swapped =
+      replaced(device_eds, "Param1 = 0, , , 0x0000, 0xC7, 2, \"Speed\"", "Param9 = 0, , , 0x0000, 0xC7, 2, \"Speed\"");
   swapped = replaced(swapped, "Param3 = 0, , , 0x0010", "Param1 = 0, , , 0x0010");
   swapped = replaced(swapped, "Param9 =", "Param3 =");
   swapped = replaced(swapped, "16, Param1, 8, Param2", "16, Param3, 8, Param2");
@@ -105,7 +106,8 @@ TEST(Diff, RenumberedParametersAreMatchedByContent) {
   // Speed comes first in the new file; its old number now names Status.
   EXPECT_EQ(speed->subject, "Param3 \"Speed\"");
   EXPECT_EQ(speed->message, "renumbered: Param1 is now Param3");
-  EXPECT_NE(speed->consequence.find("sets Param1 now reaches Param1 \"Status\""), std::string::npos) << speed->consequence;
+  EXPECT_NE(speed->consequence.find("sets Param1 now reaches Param1 \"Status\""), std::string::npos)
+      << speed->consequence;
 }
 
 // A parameter whose range and help change keeps its number and name: one
@@ -114,8 +116,8 @@ TEST(Diff, ChangedParameterIsMatchedByName) {
   auto edited = replaced(device_eds, "\"Motor speed\", 0, 3000", "\"Motor speed, filtered\", 0, 1800");
   edited = replaced(edited, "Enum2 = 0, \"Off\", 1, \"Run\", 2, \"Jog\";", "Enum2 = 0, \"Off\", 1, \"Running\";");
   const auto c = compare(device_eds, edited);
-  EXPECT_EQ(c.kinds(), (std::vector<std::string>{"param-help", "param-range-narrowed", "param-enum-removed",
-                                                 "param-enum-text"}))
+  EXPECT_EQ(c.kinds(),
+            (std::vector<std::string>{"param-help", "param-range-narrowed", "param-enum-removed", "param-enum-text"}))
       << c.dump();
   EXPECT_EQ(c.find("param-range-narrowed")->message, "range 0 .. 3000 -> 0 .. 1800");
   EXPECT_EQ(c.find("param-help")->level, impact::cosmetic);
@@ -162,9 +164,10 @@ TEST(Diff, RepeatedNumbersPairInOrder) {
 }
 
 TEST(Diff, AddedAndRemovedParameters) {
-  const auto added = replaced(device_eds, "[Assembly]",
-                              "        Param4 = 0, , , 0x0000, 0xC8, 4, \"Hours\", \"h\", \"\", 0, 100000, 0, , , , , , , , , 0;\n"
-                              "[Assembly]");
+  const auto added =
+      replaced(device_eds, "[Assembly]",
+               "        Param4 = 0, , , 0x0000, 0xC8, 4, \"Hours\", \"h\", \"\", 0, 100000, 0, , , , , , , , , 0;\n"
+               "[Assembly]");
   const auto c = compare(device_eds, added);
   EXPECT_EQ(c.kinds(), (std::vector<std::string>{"param-added"})) << c.dump();
   EXPECT_EQ(c.r.differences[0].level, impact::additive);
@@ -190,7 +193,8 @@ TEST(Diff, MemberInPaddingIsAdditive) {
   const auto c = compare(device_eds, filled);
   ASSERT_EQ(c.kinds(), (std::vector<std::string>{"assembly-member-added"})) << c.dump();
   EXPECT_EQ(c.r.differences[0].level, impact::additive);
-  EXPECT_NE(c.r.differences[0].message.find("Param3 \"Status\" added at bits 24-31"), std::string::npos) << c.r.differences[0].message;
+  EXPECT_NE(c.r.differences[0].message.find("Param3 \"Status\" added at bits 24-31"), std::string::npos)
+      << c.r.differences[0].message;
 }
 
 TEST(Diff, AssemblySizeIsBreaking) {
@@ -253,9 +257,10 @@ TEST(Diff, ProductCodeIsBreakingAndNamesAreCosmetic) {
 TEST(Diff, TextOutputIsCompilerStyle) {
   const auto c = compare(project_file(rightsight_old), project_file(rightsight_new));
   const auto text = c.dump();
-  EXPECT_NE(text.find("new.eds:38:17: breaking: [IO_Info] Input1 \"Sensor\": 1 byte -> 3 bytes (significant bits 6 -> 24) "
-                      "[io-size]\n  old.eds:38:17: was here\n"),
-            std::string::npos)
+  EXPECT_NE(
+      text.find("new.eds:38:17: breaking: [IO_Info] Input1 \"Sensor\": 1 byte -> 3 bytes (significant bits 6 -> 24) "
+                "[io-size]\n  old.eds:38:17: was here\n"),
+      std::string::npos)
       << text;
   EXPECT_NE(text.find("3 differences: 1 breaking, 1 additive, 1 cosmetic\n"), std::string::npos) << text;
   EXPECT_EQ(text.find('\033'), std::string::npos);
@@ -285,8 +290,9 @@ TEST(Diff, EtherNetIpConnections) {
       "                      \"Exclusive Owner\", \"\", \"20 04 24 01 2C 64 2C 65\";\n";
   auto changed = replaced(with_connection, ", 2, Assem101,", ", 4, Assem101,");
   changed = replaced(changed, "2C 64 2C 65", "2C 64 2C 66");
-  changed += "        Connection2 = 0x02010002, 0x44640405, , 0, , , 2, Assem101, , , , ,\n"
-             "                      \"Input Only\", \"\", \"20 04 24 01 2C FE 2C 65\";\n";
+  changed +=
+      "        Connection2 = 0x02010002, 0x44640405, , 0, , , 2, Assem101, , , , ,\n"
+      "                      \"Input Only\", \"\", \"20 04 24 01 2C FE 2C 65\";\n";
   const auto c = compare(with_connection, changed);
   ASSERT_EQ(c.kinds(), (std::vector<std::string>{"connection-size", "connection-instance", "connection-added"}))
       << c.dump();
@@ -312,6 +318,7 @@ TEST(Diff, RightSightTextIsTheDocumentedOne) {
   const std::string status = "[1]\n";
   ASSERT_TRUE(expected.ends_with(status)) << expected;
   expected.resize(expected.size() - status.size());
-  const auto c = compare(project_file(rightsight_old), project_file(rightsight_new), {}, rightsight_old, rightsight_new);
+  const auto c =
+      compare(project_file(rightsight_old), project_file(rightsight_new), {}, rightsight_old, rightsight_new);
   EXPECT_EQ(c.dump(), expected);
 }

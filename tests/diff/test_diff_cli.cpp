@@ -13,7 +13,8 @@ std::string project(const char* rel) { return (fs::path(EDSC_PROJECT_DIR) / rel)
 }  // namespace
 
 TEST_F(Cli, DiffRightSightPairIsBreaking) {
-  const auto r = run_edsc({"diff", project("eds/rightsight-42ef-diffuse.eds"), project("eds/rightsight-42ef-3byte.eds")});
+  const auto r =
+      run_edsc({"diff", project("eds/rightsight-42ef-diffuse.eds"), project("eds/rightsight-42ef-3byte.eds")});
   EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_NE(r.output.find("breaking: [IO_Info] Input1 \"Sensor\": 1 byte -> 3 bytes"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("additive: [Variant_IO_Info]: added: Input1 \"Sensor\" (1 byte) [io-section-added]"),
@@ -37,7 +38,8 @@ TEST_F(Cli, DiffOnlyAdditiveExitsZero) {
   const auto newer = file("newer.eds", text);
   const auto r = run_edsc({"diff", project("eds/rightsight-42ef-diffuse.eds"), newer.string()});
   EXPECT_EQ(r.status, 0) << r.output;
-  EXPECT_NE(r.output.find("additive: [Device] MinRev: minor revision raised: 1.4 -> 1.5"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("additive: [Device] MinRev: minor revision raised: 1.4 -> 1.5"), std::string::npos)
+      << r.output;
   const auto exact = run_edsc({"diff", "--keying=exact", project("eds/rightsight-42ef-diffuse.eds"), newer.string()});
   EXPECT_EQ(exact.status, 1) << exact.output;
 }
@@ -63,8 +65,8 @@ TEST_F(Cli, DiffBadOptionIsUsageError) {
 }
 
 TEST_F(Cli, DiffJsonHasTheDocumentedShape) {
-  const auto r = run_edsc({"diff", "--format=json", project("eds/rightsight-42ef-diffuse.eds"),
-                           project("eds/rightsight-42ef-3byte.eds")});
+  const auto r = run_edsc(
+      {"diff", "--format=json", project("eds/rightsight-42ef-diffuse.eds"), project("eds/rightsight-42ef-3byte.eds")});
   EXPECT_EQ(r.status, 1) << r.output;
   const auto j = nlohmann::json::parse(r.output);
   EXPECT_EQ(j["format"], "edsc-diff");

@@ -50,7 +50,8 @@ std::size_t against_fmt(const fs::path& dir) {
       const auto& d = r.differences[0];
       EXPECT_EQ(d.kind, "identity-product");
       EXPECT_EQ(d.level, impact::breaking);
-      EXPECT_EQ(d.message, "product code (ProdCode) changed from " + std::to_string(was) + " to " + std::to_string(now));
+      EXPECT_EQ(d.message,
+                "product code (ProdCode) changed from " + std::to_string(was) + " to " + std::to_string(now));
       EXPECT_EQ(r.keys.before.product_code, was);
       EXPECT_EQ(r.keys.after.product_code, now);
       EXPECT_FALSE(r.keys.exact_match);

@@ -135,7 +135,8 @@ TEST(DiffEntries, ConnectionNamesAreCutAfterFortyCharacters) {
     return device_eds +
            "[Connection Manager]\n"
            "        Connection1 = 0x04010002, 0x44640405, , 4, Assem100, , 2, Assem101, , , , ,\n"
-           "                      \"" + name + "\", \"\", \"20 04 24 01 2C 64 2C 65\";\n";
+           "                      \"" +
+           name + "\", \"\", \"20 04 24 01 2C 64 2C 65\";\n";
   };
   const auto added = [&](const std::string& name) {
     const auto c = compare(device_eds, with(name));
@@ -162,7 +163,8 @@ TEST(DiffEntries, OneBitMemberIsNamedByItsBit) {
 // and loses its closing quote to "...".
 TEST(DiffEntries, EnumeratedValuesAreCutAfterFortyCharacters) {
   const auto added = [](std::size_t n) {
-    const auto c = compare(device_eds, replaced(device_eds, "2, \"Jog\";", "2, \"Jog\", 3, \"" + std::string(n, 'N') + "\";"));
+    const auto c =
+        compare(device_eds, replaced(device_eds, "2, \"Jog\";", "2, \"Jog\", 3, \"" + std::string(n, 'N') + "\";"));
     const auto* d = c.find("param-enum-added");
     return d == nullptr ? std::string("(none)") : d->message;
   };
@@ -173,8 +175,8 @@ TEST(DiffEntries, EnumeratedValuesAreCutAfterFortyCharacters) {
 // A string in a message is quoted with its quotes and backslashes escaped,
 // every other character as it is.
 TEST(DiffEntries, StringsInMessagesAreQuotedAndEscaped) {
-  const auto d = only(device_eds, replaced(device_eds, "DescText = \"diff test device\";",
-                                           "DescText = \"say \\\"hi\\\" c:\\\\dir\";"));
+  const auto d = only(
+      device_eds, replaced(device_eds, "DescText = \"diff test device\";", "DescText = \"say \\\"hi\\\" c:\\\\dir\";"));
   EXPECT_EQ(d.subject, "[File] DescText");
   EXPECT_EQ(d.message, "\"diff test device\" -> \"say \\\"hi\\\" c:\\\\dir\"");
 }
@@ -212,7 +214,9 @@ TEST(DiffEntries, UnreadableTriggerWithdrawsNoBit) {
   const auto with = [&](const std::string& trigger) {
     return device_eds +
            "[Connection Manager]\n"
-           "        Connection1 = " + trigger + ", 0x44640405, , 4, Assem100, , 2, Assem101, , , , ,\n"
+           "        Connection1 = " +
+           trigger +
+           ", 0x44640405, , 4, Assem100, , 2, Assem101, , , , ,\n"
            "                      \"Exclusive Owner\", \"\", \"20 04 24 01 2C 64 2C 65\";\n";
   };
   const auto c = compare(with("bad"), with("0x04010002"));
@@ -222,15 +226,14 @@ TEST(DiffEntries, UnreadableTriggerWithdrawsNoBit) {
   EXPECT_NE(d->consequence.find("withdrawn (bits 0x0)"), std::string::npos) << d->consequence;
 }
 
-
 // Bit 4 of a DeviceNet mask (multicast poll, unconfirmed) and the reserved
 // bits above it name no connection type: Input1 of the RightSight gaining bit
 // 4 (0x0006 -> 0x0016) loses no bit (0x0006 & ~0x0016 == 0), so it is
 // additive, and both lists name bits 1 and 2 only.
 TEST(DiffEntries, MaskBitsPastCyclicAreNotNamed) {
   const auto old_text = project_file("eds/rightsight-42ef-diffuse.eds");
-  const auto c = compare(old_text, replaced(old_text, "0x0006,                         $ strobe and change of state",
-                                            "0x0016,"));
+  const auto c =
+      compare(old_text, replaced(old_text, "0x0006,                         $ strobe and change of state", "0x0016,"));
   ASSERT_EQ(c.kinds(), std::vector<std::string>{"io-connection-mask"}) << c.dump();
   const auto& d = c.r.differences[0];
   EXPECT_EQ(d.level, impact::additive);
@@ -255,16 +258,24 @@ TEST(DiffEntries, SizeChangeFromOrToAnUnknownSizeMovesByNoCount) {
   auto* d = c.find("io-size");
   ASSERT_NE(d, nullptr) << c.dump();
   EXPECT_EQ(d->message, "1 byte -> an unknown number of bytes");
-  EXPECT_EQ(d->consequence, by_default + "A scanner configured for 1 byte from this node receives an unknown number "
-                                         "of bytes" + edited + "an unknown number of bytes of the scanner's input "
-                                         "image, so every node mapped after it moves." + unchanged);
+  EXPECT_EQ(d->consequence, by_default +
+                                "A scanner configured for 1 byte from this node receives an unknown number "
+                                "of bytes" +
+                                edited +
+                                "an unknown number of bytes of the scanner's input "
+                                "image, so every node mapped after it moves." +
+                                unchanged);
   c = compare(unknown, known);
   d = c.find("io-size");
   ASSERT_NE(d, nullptr) << c.dump();
   EXPECT_EQ(d->message, "an unknown number of bytes -> 1 byte");
-  EXPECT_EQ(d->consequence, by_default + "A scanner configured for an unknown number of bytes from this node "
-                                         "receives 1 byte" + edited + "1 byte of the scanner's input image, so every "
-                                         "node mapped after it moves." + unchanged);
+  EXPECT_EQ(d->consequence, by_default +
+                                "A scanner configured for an unknown number of bytes from this node "
+                                "receives 1 byte" +
+                                edited +
+                                "1 byte of the scanner's input image, so every "
+                                "node mapped after it moves." +
+                                unchanged);
 }
 
 // The text output wraps a consequence at its blanks: a blank at its end

@@ -14,8 +14,8 @@ std::string device(const std::string& type, const std::string& size, const std::
   return "[File]\n    DescText = \"x\";\n    CreateDate = 01-01-2024;\n    CreateTime = 00:00:00;\n"
          "    Revision = 1.0;\n[Device]\n    VendCode = 1;\n    VendName = \"V\";\n    ProdType = 100;\n"
          "    ProdTypeStr = \"t\";\n    ProdCode = 1;\n    MajRev = 1;\n    MinRev = 1;\n    ProdName = \"p\";\n"
-         "[Params]\n    Param1 = 0, , , 0x0000, " + type + ", " + size + ", \"Offset\", \"\", \"\", " + lo + ", " + hi +
-         ", " + def + ", , , , , , , , , 0;\n";
+         "[Params]\n    Param1 = 0, , , 0x0000, " +
+         type + ", " + size + ", \"Offset\", \"\", \"\", " + lo + ", " + hi + ", " + def + ", , , , , , , , , 0;\n";
 }
 
 std::string int_param(const std::string& lo, const std::string& hi, const std::string& def = "-50") {

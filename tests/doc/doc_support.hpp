@@ -22,9 +22,7 @@ inline std::unique_ptr<analysis> analyse(const std::string& text, const std::str
   return analyze(std::make_unique<source_file>(name, text), check_options{});
 }
 
-inline std::unique_ptr<analysis> analyse_file(const fs::path& p) {
-  return analyse(test::read_text(p), p.string());
-}
+inline std::unique_ptr<analysis> analyse_file(const fs::path& p) { return analyse(test::read_text(p), p.string()); }
 
 // A small EtherNet/IP device whose strings try to be markup.
 inline constexpr const char* hostile_eds = R"([File]
@@ -65,10 +63,9 @@ inline constexpr const char* hostile_eds = R"([File]
 // syntax (# ? % & : \\), HTML syntax (quotes, <), spaces and line breaks,
 // UTF-8, a Latin-1 byte that is not UTF-8, a leading '-'.
 inline const std::vector<std::string> awkward_names{
-    "d\xC3\xA9v #1?.eds", "two words.eds", "hash#.eds",      "query?x=1.eds",  "percent%41.eds",
-    "amp&amp;.eds",       "quote\".eds",   "apos'.eds",      "lt<gt>.eds",     "latin\xE9.eds",
-    "-leading.eds",       "new\nline.eds", "tab\tbed.eds",  "colon:x.eds",    "back\\slash.eds",
-    "plus+semi;.eds",     "[brackets].eds", "%2Fslash.eds",
+    "d\xC3\xA9v #1?.eds", "two words.eds", "hash#.eds",       "query?x=1.eds",  "percent%41.eds", "amp&amp;.eds",
+    "quote\".eds",        "apos'.eds",     "lt<gt>.eds",      "latin\xE9.eds",  "-leading.eds",   "new\nline.eds",
+    "tab\tbed.eds",       "colon:x.eds",   "back\\slash.eds", "plus+semi;.eds", "[brackets].eds", "%2Fslash.eds",
 };
 
 // A small valid EDS whose product name tells its page apart.

@@ -38,7 +38,8 @@ browser_view load_url(const std::string& browser, const std::string& url) {
   const auto err = profile.path() / "stderr";
   const auto dom = profile.path() / "dom";
   // Grouped, so run_shell's own 2>&1 cannot take stderr from the file.
-  const auto cmd = "{ timeout 120 " + test::quoted(fs::path(browser)) + " --headless --disable-gpu --no-sandbox --no-first-run " +
+  const auto cmd = "{ timeout 120 " + test::quoted(fs::path(browser)) +
+                   " --headless --disable-gpu --no-sandbox --no-first-run " +
                    "--user-data-dir=" + quoted(profile.path() / "p") + " --enable-logging=stderr --v=0 --dump-dom " +
                    test::quoted(fs::path(url)) + " >" + quoted(dom) + " 2>" + quoted(err) + "; }";
   browser_view v;
@@ -59,10 +60,10 @@ bool screenshot(const std::string& browser, const fs::path& page, const std::str
   temp_dir profile("doc-chromium");
   const auto png = screenshots / (name + ".png");
   fs::remove(png);
-  run_shell("timeout 120 " + test::quoted(fs::path(browser)) + " --headless --disable-gpu --no-sandbox --no-first-run " +
-            "--hide-scrollbars --user-data-dir=" + quoted(profile.path() / "p") +
-            " --window-size=1200," + std::to_string(height) + " --screenshot=" + quoted(png) + " " +
-            test::quoted(fs::path("file://" + fs::absolute(page).string())));
+  run_shell("timeout 120 " + test::quoted(fs::path(browser)) +
+            " --headless --disable-gpu --no-sandbox --no-first-run " + "--hide-scrollbars --user-data-dir=" +
+            quoted(profile.path() / "p") + " --window-size=1200," + std::to_string(height) +
+            " --screenshot=" + quoted(png) + " " + test::quoted(fs::path("file://" + fs::absolute(page).string())));
   return fs::exists(png);
 }
 
@@ -90,25 +91,26 @@ layout_probe probe_layout(const std::string& browser, const fs::path& page, int 
   const auto copy = profile.path() / "probed.html";
   auto html = read_text(page);
   const auto body_end = html.rfind("</body>");
-  html.insert(body_end == std::string::npos ? html.size() : body_end,
-              "<script>window.addEventListener('load',function(){var o=[],d=document.documentElement;"
-              "function b(e){var r=e.getBoundingClientRect();return [Math.round(r.left),Math.round(r.top+scrollY),"
-              "Math.round(r.width),Math.round(r.height)].join(' ');}"
-              "o.push('V '+d.clientWidth+' '+d.scrollWidth);"
-              "document.querySelectorAll('h1,h2').forEach(function(h){o.push('H '+h.tagName+' '+b(h)+' '+"
-              "h.textContent.trim().replace(/[\\s|]+/g,'_'));});"
-              "document.querySelectorAll('svg').forEach(function(s){var r=s.getBoundingClientRect(),n=0,x=0;"
-              "s.querySelectorAll('text').forEach(function(t){n++;var q=t.getBoundingClientRect();"
-              "if(q.width<=0||q.left<r.left-0.5||q.right>r.right+0.5||q.top<r.top-0.5||q.bottom>r.bottom+0.5)x++;});"
-              "o.push('S '+Math.round(r.width)+' '+Math.round(r.height)+' '+(s.getAttribute('width')||0)+' '+"
-              "(s.getAttribute('height')||0)+' '+n+' '+x+' '+(s.getAttribute('aria-label')||'').replace(/[\\s|]+/g,'_'));});"
-              "document.body.setAttribute('data-probe',o.join('|'));});</script>");
+  html.insert(
+      body_end == std::string::npos ? html.size() : body_end,
+      "<script>window.addEventListener('load',function(){var o=[],d=document.documentElement;"
+      "function b(e){var r=e.getBoundingClientRect();return [Math.round(r.left),Math.round(r.top+scrollY),"
+      "Math.round(r.width),Math.round(r.height)].join(' ');}"
+      "o.push('V '+d.clientWidth+' '+d.scrollWidth);"
+      "document.querySelectorAll('h1,h2').forEach(function(h){o.push('H '+h.tagName+' '+b(h)+' '+"
+      "h.textContent.trim().replace(/[\\s|]+/g,'_'));});"
+      "document.querySelectorAll('svg').forEach(function(s){var r=s.getBoundingClientRect(),n=0,x=0;"
+      "s.querySelectorAll('text').forEach(function(t){n++;var q=t.getBoundingClientRect();"
+      "if(q.width<=0||q.left<r.left-0.5||q.right>r.right+0.5||q.top<r.top-0.5||q.bottom>r.bottom+0.5)x++;});"
+      "o.push('S '+Math.round(r.width)+' '+Math.round(r.height)+' '+(s.getAttribute('width')||0)+' '+"
+      "(s.getAttribute('height')||0)+' '+n+' '+x+' '+(s.getAttribute('aria-label')||'').replace(/[\\s|]+/g,'_'));});"
+      "document.body.setAttribute('data-probe',o.join('|'));});</script>");
   test::write_text(copy, html);
   const auto dom = profile.path() / "dom";
-  run_shell("{ timeout 120 " + test::quoted(fs::path(browser)) + " --headless --disable-gpu --no-sandbox --no-first-run " +
-            "--hide-scrollbars --user-data-dir=" + quoted(profile.path() / "p") + " --window-size=1200," +
-            std::to_string(height) + " --dump-dom " + test::quoted(fs::path("file://" + copy.string())) + " >" +
-            quoted(dom) + " 2>/dev/null; }");
+  run_shell("{ timeout 120 " + test::quoted(fs::path(browser)) +
+            " --headless --disable-gpu --no-sandbox --no-first-run " + "--hide-scrollbars --user-data-dir=" +
+            quoted(profile.path() / "p") + " --window-size=1200," + std::to_string(height) + " --dump-dom " +
+            test::quoted(fs::path("file://" + copy.string())) + " >" + quoted(dom) + " 2>/dev/null; }");
   const auto text = read_text(dom);
   layout_probe p;
   const auto at = text.find("data-probe=\"");
@@ -232,13 +234,14 @@ TEST_F(DocBrowser, ModularRockwellFile) {
   const auto v = render(rockwell / "0001000700380100.eds", "rockwell-1793-ob16p");
   EXPECT_NE(v.dom.find("16 Point 24V DC Protected Output, Source 1793-OB16P/A"), std::string::npos);
   EXPECT_NE(v.dom.find(">Point 0 Safe State</a>"), std::string::npos);  // the legend names it
-  EXPECT_NE(v.dom.find("Lost Communications"), std::string::npos);  // a parameter
+  EXPECT_NE(v.dom.find("Lost Communications"), std::string::npos);      // a parameter
 }
 
 TEST_F(DocBrowser, LargestCorpusFile) {
   fs::path largest;
   for (const auto& e : fs::directory_iterator(corpus))
-    if (e.path().extension() == ".eds" && (largest.empty() || e.file_size() > fs::file_size(largest))) largest = e.path();
+    if (e.path().extension() == ".eds" && (largest.empty() || e.file_size() > fs::file_size(largest)))
+      largest = e.path();
   const auto v = render(largest, "largest-corpus-file");
   EXPECT_NE(v.dom.find("<h1>193-EIO</h1>"), std::string::npos) << largest;
   EXPECT_NE(v.dom.find(">TripReset</text>"), std::string::npos);
@@ -251,8 +254,8 @@ TEST_F(DocBrowser, LargestCorpusFile) {
 // between the bar's bottom and the target's top.
 TEST_F(DocBrowser, JumpsLandBelowTheNavigationBar) {
   const auto page = dir_.path() / "flex.html";
-  const auto r = run_shell(test::edsc_command() + " doc " + quoted(rockwell / "0001000700200100.eds") + " -o " +
-                           quoted(page));
+  const auto r =
+      run_shell(test::edsc_command() + " doc " + quoted(rockwell / "0001000700200100.eds") + " -o " + quoted(page));
   ASSERT_LE(r.status, 1) << r.output;
   auto html = read_text(page);
   const auto body_end = html.rfind("</body>");

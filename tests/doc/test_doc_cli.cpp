@@ -16,8 +16,8 @@ using test::write_text;
 TEST(DocCli, OneFileGivesOnePage) {
   temp_dir dir("doc-one");
   const auto out = dir.path() / "rs.html";
-  const auto r = run_shell(edsc_command() + " doc " + quoted(project / "eds/rightsight-42ef-3byte.eds") + " -o " +
-                           quoted(out));
+  const auto r =
+      run_shell(edsc_command() + " doc " + quoted(project / "eds/rightsight-42ef-3byte.eds") + " -o " + quoted(out));
   EXPECT_EQ(r.status, 0) << r.output;
   const auto html = read_text(out);
   EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
@@ -41,9 +41,10 @@ TEST(DocCli, MarkdownWritesTheMapsBesideIt) {
   const auto svg = read_text(dir.path() / "sensor.input1.svg");
   EXPECT_EQ(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0u);
   EXPECT_TRUE(fs::exists(dir.path() / "sensor.variant-input1.svg"));
-  EXPECT_EQ(run_shell(edsc_command() + " doc --format=md " + quoted(project / "eds/rightsight-42ef-3byte.eds") +
-                      " -o -").status,
-            2);
+  EXPECT_EQ(
+      run_shell(edsc_command() + " doc --format=md " + quoted(project / "eds/rightsight-42ef-3byte.eds") + " -o -")
+          .status,
+      2);
 }
 
 TEST(DocCli, ASiteHasAPagePerFileAndAnIndexThatNamesCollisions) {
@@ -110,8 +111,8 @@ TEST(DocCli, TheIndexMarksEveryFileThatNamesNoNetwork) {
 
 TEST(DocCli, BadInputAndUnwritableOutputAreExitTwoWithNothingHalfWritten) {
   temp_dir dir("doc-bad");
-  auto r = run_shell(edsc_command() + " doc " + quoted(dir.path() / "missing.eds") + " -o " +
-                     quoted(dir.path() / "x.html"));
+  auto r =
+      run_shell(edsc_command() + " doc " + quoted(dir.path() / "missing.eds") + " -o " + quoted(dir.path() / "x.html"));
   EXPECT_EQ(r.status, 2);
   EXPECT_FALSE(fs::exists(dir.path() / "x.html"));
   r = run_shell(edsc_command() + " doc " + quoted(project / "eds/rightsight-42ef-3byte.eds") + " -o " +

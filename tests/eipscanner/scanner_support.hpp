@@ -13,8 +13,8 @@
 
 #include "ConnectionManager.h"
 #include "SessionInfo.h"
-#include "cip/connectionManager/NetworkConnectionParams.h"
 #include "cip/connectionManager/NetworkConnectionParametersBuilder.h"
+#include "cip/connectionManager/NetworkConnectionParams.h"
 #include "netns/test_network.hpp"
 #include "sim/sim_wire.hpp"
 #include "utils/Logger.h"

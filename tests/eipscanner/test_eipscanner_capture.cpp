@@ -54,7 +54,8 @@ std::vector<std::string> tshark(const std::string& pcap, const std::string& filt
 std::string compact(const std::string& s) {
   std::string out;
   for (const char c : s)
-    if (std::isxdigit(static_cast<unsigned char>(c))) out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (std::isxdigit(static_cast<unsigned char>(c)))
+      out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return out;
 }
 
@@ -153,27 +154,32 @@ TEST(eipscanner_capture, requests_read_out_of_a_capture_replay_with_the_fields_t
                      ",\"connection\":1,\"class\":1,\"ot_rpi_us\":" + std::to_string(number(f[3])) +
                      ",\"to_rpi_us\":" + std::to_string(number(f[4])) + "}"),
             std::string::npos)
-      << fo[0] << "\n" << log;
+      << fo[0] << "\n"
+      << log;
   EXPECT_EQ(number(f[3]), 20000u);
   EXPECT_EQ(number(f[4]), 50000u);
   // Forward_Close of the same serial.
   const auto fc = tshark(pcap, "cip.cm.sc == 0x4e && cip.rr == 0", "-e cip.cm.conn_serial_num");
   ASSERT_EQ(fc.size(), 1u);
-  EXPECT_NE(log.find("{\"event\":\"close\",\"serial\":" + std::to_string(number(fc[0])) + ","), std::string::npos) << log;
+  EXPECT_NE(log.find("{\"event\":\"close\",\"serial\":" + std::to_string(number(fc[0])) + ","), std::string::npos)
+      << log;
   // Set_Attribute_Single's data, and the O->T frames' data, as tshark reads them.
   const auto set = tshark(pcap, "cip.service == 0x10", "-e cip.data");
   ASSERT_EQ(set.size(), 1u);
   EXPECT_NE(log.find("{\"event\":\"config\",\"instance\":151,\"by\":\"Set_Attribute_Single\",\"data\":\"" +
                      compact(set[0]) + "\"}"),
             std::string::npos)
-      << set[0] << "\n" << log;
+      << set[0] << "\n"
+      << log;
   const auto first = tshark(pcap, ot_frames, "-e cipio.data");
   ASSERT_FALSE(first.empty());
   const auto data = compact(first[0]);
   ASSERT_GE(data.size(), 64u) << first[0];
-  EXPECT_NE(log.find("{\"event\":\"output\",\"instance\":150,\"connection\":1,\"run\":true,"), std::string::npos) << log;
+  EXPECT_NE(log.find("{\"event\":\"output\",\"instance\":150,\"connection\":1,\"run\":true,"), std::string::npos)
+      << log;
   EXPECT_NE(log.find(data.substr(data.size() - 64)), std::string::npos)
-      << "the 32 output bytes tshark decoded (" << data << ") are in the simulator's output line\n" << log;
+      << "the 32 output bytes tshark decoded (" << data << ") are in the simulator's output line\n"
+      << log;
 }
 
 }  // namespace

@@ -155,8 +155,10 @@ TEST_F(eipscanner_sim, get_and_set_attribute_single_with_16_and_8_bit_segments) 
   EXPECT_NE(log.find("{\"event\":\"output\",\"instance\":150,\"by\":\"Set_Attribute_Single\",\"data\":\"808182"),
             std::string::npos)
       << log;
-  EXPECT_NE(log.find("{\"event\":\"config\",\"instance\":151,\"by\":\"Set_Attribute_Single\",\"data\":\"3c3c3c3c3c3c3c3c3c3c\"}"),
-            std::string::npos)
+  EXPECT_NE(
+      log.find(
+          "{\"event\":\"config\",\"instance\":151,\"by\":\"Set_Attribute_Single\",\"data\":\"3c3c3c3c3c3c3c3c3c3c\"}"),
+      std::string::npos)
       << log;
 }
 
@@ -180,18 +182,21 @@ TEST_F(eipscanner_sim, the_parameter_object_reads_as_the_eds_says_and_takes_a_va
   EXPECT_EQ(speed.getScalingOffset(), 5);
   EXPECT_EQ(speed.getPrecision(), 1);
   const MessageRouter mr;
-  EXPECT_EQ(mr.sendRequest(si, ServiceCodes::SET_ATTRIBUTE_SINGLE, EPath(0x0F, 3, 1), {0xB3, 0xFF}).getGeneralStatusCode(),
-            GeneralStatusCodes::SUCCESS);  // -77
-  EXPECT_EQ(mr.sendRequest(si, ServiceCodes::SET_ATTRIBUTE_SINGLE, EPath(0x0F, 3, 1), {0xE9, 0x03}).getGeneralStatusCode(),
-            GeneralStatusCodes::INVALID_ATTRIBUTE_VALUE);  // 1001, above the maximum
+  EXPECT_EQ(
+      mr.sendRequest(si, ServiceCodes::SET_ATTRIBUTE_SINGLE, EPath(0x0F, 3, 1), {0xB3, 0xFF}).getGeneralStatusCode(),
+      GeneralStatusCodes::SUCCESS);  // -77
+  EXPECT_EQ(
+      mr.sendRequest(si, ServiceCodes::SET_ATTRIBUTE_SINGLE, EPath(0x0F, 3, 1), {0xE9, 0x03}).getGeneralStatusCode(),
+      GeneralStatusCodes::INVALID_ATTRIBUTE_VALUE);  // 1001, above the maximum
   speed.updateValue(si);
   EXPECT_EQ(speed.getActualValue<std::int16_t>(), -77);
   const eipScanner::ParameterObject hours(4, true, si);
   EXPECT_TRUE(hours.isReadOnly());
   EXPECT_EQ(hours.getActualValue<std::uint32_t>(), 7u);
   EXPECT_EQ(hours.getMaxValue<std::uint32_t>(), 4000000000u);
-  EXPECT_EQ(mr.sendRequest(si, ServiceCodes::SET_ATTRIBUTE_SINGLE, EPath(0x0F, 4, 1), {1, 0, 0, 0}).getGeneralStatusCode(),
-            GeneralStatusCodes::ATTRIBUTE_NOT_SETTABLE);
+  EXPECT_EQ(
+      mr.sendRequest(si, ServiceCodes::SET_ATTRIBUTE_SINGLE, EPath(0x0F, 4, 1), {1, 0, 0, 0}).getGeneralStatusCode(),
+      GeneralStatusCodes::ATTRIBUTE_NOT_SETTABLE);
   const auto log = sim_.wait_for("\"event\":\"parameter\"");
   EXPECT_NE(log.find("{\"event\":\"parameter\",\"instance\":3,\"data\":\"b3ff\"}"), std::string::npos) << log;
 }
@@ -208,8 +213,7 @@ TEST_F(eipscanner_sim, the_file_object_uploads_the_eds_byte_for_byte) {
     EXPECT_EQ(status, GeneralStatusCodes::SUCCESS);
     content = bytes;
   });
-  for (int i = 0; i < 1000 && file.handleTransfers(si); ++i) {
-  }
+  for (int i = 0; i < 1000 && file.handleTransfers(si); ++i) {}
   ASSERT_TRUE(done);
   EXPECT_EQ(std::string(content.begin(), content.end()), std::string(sim_test::asym_eds));
   const auto log = sim_.wait_for("\"event\":\"uploaded\"");
@@ -250,8 +254,9 @@ TEST_F(eipscanner_sim, class_1_connections_of_every_kind_carry_frames_both_ways)
   EXPECT_EQ(log.find("\"event\":\"refused\""), std::string::npos) << log;
   EXPECT_EQ(log.find("\"event\":\"timeout\""), std::string::npos) << log;
   EXPECT_EQ(log.find("\"event\":\"wrong-size\""), std::string::npos) << log;
-  EXPECT_NE(log.find("{\"event\":\"output\",\"instance\":150,\"connection\":1,\"run\":true,\"sequence\":1,\"data\":\"4041"),
-            std::string::npos)
+  EXPECT_NE(
+      log.find("{\"event\":\"output\",\"instance\":150,\"connection\":1,\"run\":true,\"sequence\":1,\"data\":\"4041"),
+      std::string::npos)
       << log;
   for (const auto& [number, c, sends] : {std::tuple{1, &c_owner, true}, {2, &c_input, true}, {3, &c_listen, false}}) {
     SCOPED_TRACE("Connection" + std::to_string(number));
@@ -276,13 +281,15 @@ TEST_F(eipscanner_sim, large_forward_open_opens_a_small_connection_and_one_of_30
   const auto si = session();
   ConnectionManager cm;
   // Connection1 of 505 + 6 and 509 + 2 bytes fits Forward_Open, and Large_Forward_Open takes it too.
-  auto small = cm.largeForwardOpen(si, class1({0x20, 0x04, 0x24, 0x97, 0x2C, 0x96, 0x2C, 0x64},
-                                              {505, Builder::P2P, 20000, true}, {509, Builder::P2P, 20000, false}, true));
+  auto small =
+      cm.largeForwardOpen(si, class1({0x20, 0x04, 0x24, 0x97, 0x2C, 0x96, 0x2C, 0x64}, {505, Builder::P2P, 20000, true},
+                                     {509, Builder::P2P, 20000, false}, true));
   ASSERT_FALSE(small.expired());
   cm.forwardClose(si, small);
   // Connection3: 3000 data bytes each way, frames larger than an Ethernet frame.
-  auto large = cm.largeForwardOpen(si, class1({0x20, 0x04, 0x24, 0x97, 0x2C, 0x99, 0x2C, 0x66},
-                                              {3000, Builder::P2P, 20000, true}, {3000, Builder::P2P, 20000, false}, true));
+  auto large =
+      cm.largeForwardOpen(si, class1({0x20, 0x04, 0x24, 0x97, 0x2C, 0x99, 0x2C, 0x66},
+                                     {3000, Builder::P2P, 20000, true}, {3000, Builder::P2P, 20000, false}, true));
   ASSERT_FALSE(large.expired());
   counted c;
   count_frames(large, c);
@@ -300,8 +307,9 @@ TEST_F(eipscanner_sim, large_forward_open_opens_a_small_connection_and_one_of_30
   EXPECT_GE(c.received, 10u);
   EXPECT_EQ(c.last.size(), 3000u);
   EXPECT_GE(close_count(log, serial, "consumed"), 10) << log.substr(0, 3000);
-  EXPECT_NE(log.find("{\"event\":\"output\",\"instance\":153,\"connection\":3,\"run\":true,\"sequence\":1,\"data\":\"7777"),
-            std::string::npos);
+  EXPECT_NE(
+      log.find("{\"event\":\"output\",\"instance\":153,\"connection\":3,\"run\":true,\"sequence\":1,\"data\":\"7777"),
+      std::string::npos);
 }
 
 }  // namespace

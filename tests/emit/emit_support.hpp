@@ -36,7 +36,7 @@ class temp_dir {
 };
 
 struct command_result {
-  int status = -1;  // exit status, -1 when it did not exit normally
+  int status = -1;     // exit status, -1 when it did not exit normally
   std::string output;  // stdout and stderr
 };
 

@@ -103,7 +103,11 @@ struct conn {
 // O->T is a heartbeat (format 2 in bits 8-10) to instance 198 or 199 with no
 // data. Connection4 names configuration 120 without a size or format.
 inline std::vector<conn> four_connections() {
-  conn in1{.number = 2, .trigger = "0x82010002", .params = "0x44640205", .ot_format = "", .name = "In1",
+  conn in1{.number = 2,
+           .trigger = "0x82010002",
+           .params = "0x44640205",
+           .ot_format = "",
+           .name = "In1",
            .path = "\"20 04 24 78 2C C6 2C 82\""};
   conn listen = in1;
   listen.number = 3;

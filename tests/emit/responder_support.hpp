@@ -38,8 +38,10 @@ inline std::vector<capture_step> read_capture() {
     std::getline(cols, id, '\t');
     std::getline(cols, data);
     const int n = std::stoi(step);
-    if (dir == "M") steps.push_back({n, {id, data}, {}});
-    else if (!steps.empty() && steps.back().step == n) steps.back().answers.push_back({id, data});
+    if (dir == "M")
+      steps.push_back({n, {id, data}, {}});
+    else if (!steps.empty() && steps.back().step == n)
+      steps.back().answers.push_back({id, data});
   }
   return steps;
 }
@@ -51,14 +53,16 @@ inline fs::path build_responder(const temp_dir& dir, const fs::path& eds) {
   EXPECT_EQ(gen.status, 0) << gen.output;
   const auto src = fs::path(EDSC_TESTS_DIR) / "emit" / "responder";
   const auto exe = dir.path() / "replay";
-  auto cc = run_shell("cc -std=c99 -Wall -Wextra -Werror -pedantic -I" + quoted(dir.path()) + " -I" + quoted(src) + " " +
-                      quoted(src / "dn_responder.c") + " " + quoted(src / "replay_main.c") + " -o " + quoted(exe));
+  auto cc =
+      run_shell("cc -std=c99 -Wall -Wextra -Werror -pedantic -I" + quoted(dir.path()) + " -I" + quoted(src) + " " +
+                quoted(src / "dn_responder.c") + " " + quoted(src / "replay_main.c") + " -o " + quoted(exe));
   EXPECT_EQ(cc.status, 0) << cc.output;
   return exe;
 }
 
 // Feeds `requests` (one per line) and returns the slave's frames per request.
-inline std::vector<std::vector<std::string>> replay(const temp_dir& dir, const fs::path& exe, const std::vector<std::string>& requests) {
+inline std::vector<std::vector<std::string>> replay(const temp_dir& dir, const fs::path& exe,
+                                                    const std::vector<std::string>& requests) {
   std::string input;
   for (const auto& r : requests) input += r + "\n";
   const auto in = dir.path() / "requests.txt";
@@ -69,8 +73,10 @@ inline std::vector<std::vector<std::string>> replay(const temp_dir& dir, const f
   std::istringstream lines(run.output);
   std::string line;
   while (std::getline(lines, line)) {
-    if (line == ".") out.emplace_back();
-    else out.back().push_back(line);
+    if (line == ".")
+      out.emplace_back();
+    else
+      out.back().push_back(line);
   }
   out.pop_back();
   return out;

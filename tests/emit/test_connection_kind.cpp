@@ -56,7 +56,8 @@ TEST(connection_kind, simulator_client_and_generator_agree_over_both_corpora) {
       const auto k = model::classify(p.conn->tt, p.facts.config_size > 0 && p.facts.config_instance != 0);
       EXPECT_EQ(p.kind.type, k.type) << "Connection" << p.conn->number;
       EXPECT_EQ(p.kind.configured, k.configured) << "Connection" << p.conn->number;
-      if (!k.unambiguous()) ambiguous.push_back(path.filename().string() + " Connection" + std::to_string(p.conn->number));
+      if (!k.unambiguous())
+        ambiguous.push_back(path.filename().string() + " Connection" + std::to_string(p.conn->number));
       for (const auto& cp : dev.points) {
         if (cp.number == p.conn->number) {
           EXPECT_EQ(cp.kind, k.type) << "simulator, Connection" << cp.number;

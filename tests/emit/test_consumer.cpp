@@ -37,9 +37,9 @@ TEST(Consumer, FindsTheInstalledPackageAndRegeneratesOnEdsChange) {
   const auto eds = dir.path() / "device.eds";
   fs::copy_file(fs::path(EDSC_PROJECT_DIR) / "eds" / "rightsight-42ef-diffuse.eds", eds);
   const auto build = dir.path() / "build";
-  auto configure = run_shell("cmake -S " + quoted(fs::path(EDSC_TESTS_DIR) / "emit" / "consumer") + " -B " +
-                             quoted(build) + " -G Ninja -DCMAKE_PREFIX_PATH=" + quoted(prefix) +
-                             " -DDEVICE_EDS=" + quoted(eds));
+  auto configure =
+      run_shell("cmake -S " + quoted(fs::path(EDSC_TESTS_DIR) / "emit" / "consumer") + " -B " + quoted(build) +
+                " -G Ninja -DCMAKE_PREFIX_PATH=" + quoted(prefix) + " -DDEVICE_EDS=" + quoted(eds));
   ASSERT_EQ(configure.status, 0) << configure.output;
   const auto make = "cmake --build " + quoted(build);
   const auto firmware = quoted(build / "firmware");

@@ -13,9 +13,9 @@
 #include <fmt/format.h>
 
 #include "corpus_dirs.hpp"
-#include "facts/c_text.hpp"
 #include "emit/header.hpp"
 #include "emit_support.hpp"
+#include "facts/c_text.hpp"
 #include "io/read_file.hpp"
 #include "lower/lower.hpp"
 #include "parse/parser.hpp"
@@ -29,7 +29,9 @@ namespace {
 // edsc refuses to write a header that would state a made-up identity.
 constexpr const char* no_identity = "kh-ko__NVM__eds_sample.txt.eds";
 
-std::string check(const std::string& cond, std::size_t& n) { return fmt::format("EDS_STATIC_ASSERT({}, model_{});\n", cond, n++); }
+std::string check(const std::string& cond, std::size_t& n) {
+  return fmt::format("EDS_STATIC_ASSERT({}, model_{});\n", cond, n++);
+}
 
 // Static assertions re-stating the model: identity, DeviceNet sizes, connections, capacity.
 std::string model_checks(const model::device& dev) {
@@ -39,7 +41,9 @@ std::string model_checks(const model::device& dev) {
   s += check(fmt::format("EDS_VENDOR_ID == {}u", id.vend_code.as_uint()), n);
   s += check(fmt::format("EDS_DEVICE_TYPE == {}u", id.prod_type.as_uint()), n);
   s += check(fmt::format("EDS_PRODUCT_CODE == {}u", id.prod_code.as_uint()), n);
-  s += check(fmt::format("EDS_MAJOR_REVISION == {}u && EDS_MINOR_REVISION == {}u", id.maj_rev.as_uint(), id.min_rev.as_uint()), n);
+  s += check(
+      fmt::format("EDS_MAJOR_REVISION == {}u && EDS_MINOR_REVISION == {}u", id.maj_rev.as_uint(), id.min_rev.as_uint()),
+      n);
   s += check(fmt::format("EDS_PRODUCT_NAME_LENGTH == {}u", std::min<std::size_t>(id.prod_name.text.size(), 32)), n);
   if (id.catalog.ok()) s += "#ifndef EDS_CATALOG\n#error catalog\n#endif\n";
   if (dev.io.section != model::none) {
@@ -99,13 +103,15 @@ std::string param_checks(const model::device& dev) {
   }
   return fmt::format(
       "#include <stdio.h>\n#include <string.h>\n"
-      "static const struct {{ uint32_t number; const char *name; unsigned type; unsigned ro; uint64_t def; int has_def; }}"
+      "static const struct {{ uint32_t number; const char *name; unsigned type; unsigned ro; uint64_t def; int "
+      "has_def; }}"
       " expect[] = {{\n{}  {{ 0, \"\", 0, 0, 0, 0 }}\n}};\n"
       "int main(void) {{\n  unsigned i; int bad = 0;\n"
       "  if (EDS_PARAM_COUNT != {}u) {{ printf(\"count\\n\"); return 1; }}\n"
       "  for (i = 0; i + 1u < sizeof expect / sizeof expect[0]; ++i) {{\n"
       "    const eds_param_info *p = &eds_params[i];\n"
-      "    if (p->number != expect[i].number || strcmp(p->name, expect[i].name) != 0 || p->data_type != expect[i].type ||\n"
+      "    if (p->number != expect[i].number || strcmp(p->name, expect[i].name) != 0 || p->data_type != expect[i].type "
+      "||\n"
       "        p->read_only != expect[i].ro || (expect[i].has_def && p->default_value != expect[i].def)) {{\n"
       "      printf(\"Param%u differs\\n\", (unsigned)expect[i].number); bad = 1; }}\n  }}\n  return bad;\n}}\n",
       rows, count);
@@ -142,7 +148,8 @@ TEST(CorpusHeaders, CompileStrictlyAndAgreeWithTheModel) {
     ASSERT_FALSE(r.has_error()) << files[i];
     write_text(dir.path() / opt.output_name, r.text);
     const auto tu = dir.path() / fmt::format("t{}.c", i);
-    write_text(tu, fmt::format("#define EDS_PARAM_TABLE\n#include \"{}\"\n{}{}", opt.output_name, model_checks(dev), param_checks(dev)));
+    write_text(tu, fmt::format("#define EDS_PARAM_TABLE\n#include \"{}\"\n{}{}", opt.output_name, model_checks(dev),
+                               param_checks(dev)));
     jobs.push_back({files[i].filename().string(), tu});
   }
   EXPECT_EQ(jobs.size(), files.size() - 1);
@@ -156,7 +163,8 @@ TEST(CorpusHeaders, CompileStrictlyAndAgreeWithTheModel) {
       const auto& j = jobs[i];
       const auto exe = fs::path(j.tu).replace_extension(".cpp.exe");
       auto c = run_shell("gcc -std=c99 -Wall -Wextra -Werror -pedantic -fsyntax-only " + quoted(j.tu));
-      auto cxx = run_shell("g++ -std=c++17 -Wall -Wextra -Werror -x c++ " + quoted(j.tu) + " -o " + quoted(exe) + " && " + quoted(exe));
+      auto cxx = run_shell("g++ -std=c++17 -Wall -Wextra -Werror -x c++ " + quoted(j.tu) + " -o " + quoted(exe) +
+                           " && " + quoted(exe));
       if (c.status != 0 || cxx.status != 0) {
         std::lock_guard lock(m);
         failures.push_back(j.name + ":\n" + c.output + cxx.output);
@@ -166,5 +174,7 @@ TEST(CorpusHeaders, CompileStrictlyAndAgreeWithTheModel) {
   std::vector<std::thread> pool;
   for (unsigned t = 0; t < std::max(2u, std::thread::hardware_concurrency()); ++t) pool.emplace_back(worker);
   for (auto& t : pool) t.join();
-  EXPECT_TRUE(failures.empty()) << failures.size() << " headers failed; first:\n" << (failures.empty() ? "" : failures[0]) << (failures.size() > 1 ? failures.back() : "");
+  EXPECT_TRUE(failures.empty()) << failures.size() << " headers failed; first:\n"
+                                << (failures.empty() ? "" : failures[0])
+                                << (failures.size() > 1 ? failures.back() : "");
 }

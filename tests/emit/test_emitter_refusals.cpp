@@ -26,7 +26,8 @@ Revision = 1.2;
 [Device]
 VendCode = 65535;
 VendName = "edsc-example";
-ProdType = )" + std::to_string(type) + ";\nProdTypeStr = \"" + type_name + "\";\nProdCode = " + std::to_string(code) +
+ProdType = )" +
+         std::to_string(type) + ";\nProdTypeStr = \"" + type_name + "\";\nProdCode = " + std::to_string(code) +
          R"(;
 MajRev = 1;
 MinRev = 1;
@@ -231,9 +232,9 @@ TEST_F(EmitterRefusals, SimRefusesEveryFieldItServesTwice) {
 // `check` calls any duplicate an error; a field none of these commands reads
 // (ProdTypeStr, DescText, a [Port]) does not stop them.
 TEST_F(EmitterRefusals, FieldsTheyDoNotReadDoNotStopThem) {
-  for (const auto& [keyword, second] : {std::pair{"ProdTypeStr", "ProdTypeStr = \"other\";"},
-                                        std::pair{"DescText", "DescText = \"other\";"},
-                                        std::pair{"Port1", "Port1 = TCP, \"other\", \"20 F5 24 01\", 2;"}}) {
+  for (const auto& [keyword, second] :
+       {std::pair{"ProdTypeStr", "ProdTypeStr = \"other\";"}, std::pair{"DescText", "DescText = \"other\";"},
+        std::pair{"Port1", "Port1 = TCP, \"other\", \"20 F5 24 01\", 2;"}}) {
     const auto in = eds(with_after(eip_eds, keyword, second));
     EXPECT_EQ(edsc("check " + quoted(in)).status, 1) << keyword;
     const auto r = edsc("header " + quoted(in) + " -o " + quoted(dir_.path() / "ok.h"));

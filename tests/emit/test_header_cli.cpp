@@ -1,9 +1,9 @@
 // `edsc header` as a user runs it, and the text helpers it relies on.
 #include <gtest/gtest.h>
 
+#include "emit_support.hpp"
 #include "facts/c_text.hpp"
 #include "facts/sha256.hpp"
-#include "emit_support.hpp"
 #include "test_paths.hpp"
 
 using namespace edsc;
@@ -93,7 +93,8 @@ TEST(HeaderCli, UsageAndInputErrors) {
 
 TEST(HeaderCli, LongProductNamesAreShortenedWithAWarning) {
   const auto r = header(quoted(fs::path(EDSC_CORPUS_DIR) /
-                               "KamWisa__ABB_Mitsubishi-PLC-Interface-Configuration-via-EtherNetIP__ENIP_FA.eds") + " -o -");
+                               "KamWisa__ABB_Mitsubishi-PLC-Interface-Configuration-via-EtherNetIP__ENIP_FA.eds") +
+                        " -o -");
   EXPECT_EQ(r.status, 0);
   EXPECT_NE(r.output.find("warning: [Device] ProdName is 37 bytes"), std::string::npos);
   EXPECT_NE(r.output.find("#define EDS_PRODUCT_NAME \"ABB EtherNet/IP Anybus Adapter D\""), std::string::npos);

@@ -28,7 +28,7 @@ std::vector<std::string> points(const emit::opener_plan& p) {
   for (const auto& pt : p.points) {
     const char* kind = pt.kind == model::app_type::exclusive_owner ? "owner"
                        : pt.kind == model::app_type::input_only    ? "input-only"
-                                                                     : "listen-only";
+                                                                   : "listen-only";
     out.push_back(fmt::format("{}#{} Connection{} {}/{}/{} {}", kind, pt.index, pt.connection, pt.output_instance,
                               pt.input_instance, pt.config_instance, pt.name));
   }
@@ -80,10 +80,10 @@ TEST(OpenerPlan, EachKindIsCountedFromZeroAndHeartbeatInstancesHaveNoData) {
   EXPECT_TRUE(c->diags.empty()) << c->diags[0].message;
   EXPECT_EQ(assemblies(c->plan), (std::vector<std::string>{"100:16:output", "120:10:configuration", "130:32:input",
                                                            "198:0:output", "199:0:output"}));
-  EXPECT_EQ(points(c->plan), (std::vector<std::string>{"owner#0 Connection1 100/130/120 Owner",
-                                                       "input-only#0 Connection2 198/130/120 In1",
-                                                       "listen-only#0 Connection3 199/130/120 Listen",
-                                                       "input-only#1 Connection4 198/130/120 In2"}));
+  EXPECT_EQ(points(c->plan),
+            (std::vector<std::string>{
+                "owner#0 Connection1 100/130/120 Owner", "input-only#0 Connection2 198/130/120 In1",
+                "listen-only#0 Connection3 199/130/120 Listen", "input-only#1 Connection4 198/130/120 In2"}));
   EXPECT_EQ(c->plan.exclusive_owner, 1u);
   EXPECT_EQ(c->plan.input_only, 2u);
   EXPECT_EQ(c->plan.listen_only, 1u);
@@ -182,15 +182,15 @@ TEST(OpenerPlan, EachDirectionWithDataNeedsAnInstance) {
     // 16 bytes (Assem100) and no instance.
     conn c1{.path = "\"20 04 24 78 2C 82\""};
     const auto c = plan_connections({c1});
-    expect_one(*c, diag_id::opener_connection_path,
-               "Connection1: its O->T data has no assembly instance in the path", c->at(c1.path));
+    expect_one(*c, diag_id::opener_connection_path, "Connection1: its O->T data has no assembly instance in the path",
+               c->at(c1.path));
   }
   {
     // No connection point; T->O has 32 bytes, O->T none.
     conn c1{.ot_format = "", .to_size = "32", .to_format = "", .path = "\"20 04 24 78\""};
     const auto c = plan_connections({c1});
-    expect_one(*c, diag_id::opener_connection_path,
-               "Connection1: its T->O data has no assembly instance in the path", c->at(c1.path));
+    expect_one(*c, diag_id::opener_connection_path, "Connection1: its T->O data has no assembly instance in the path",
+               c->at(c1.path));
   }
   {
     // Neither direction has data nor an instance.
@@ -203,8 +203,9 @@ TEST(OpenerPlan, EachDirectionWithDataNeedsAnInstance) {
 }
 
 TEST(OpenerPlan, AConnectionWithoutAPathIsReportedAtItsEntry) {
-  const std::string entry = "Connection1 = 0x84010002, 0x44640405, 10000, , Assem100, 10000, , Assem130, , , , "
-                            "Assem120, \"Owner\", \"\";";
+  const std::string entry =
+      "Connection1 = 0x84010002, 0x44640405, 10000, , Assem100, 10000, , Assem130, , , , "
+      "Assem120, \"Owner\", \"\";";
   const auto c = plan_eds(device_section() + assembly_section() + "[Connection Manager]\n    " + entry + "\n");
   ASSERT_EQ(c->diags.size(), 1u);
   EXPECT_EQ(c->diags[0].id, diag_id::opener_connection_path);
@@ -220,8 +221,7 @@ TEST(OpenerPlan, InstancesUpTo0xFFFFAreServed) {
   conn c1{.to_size = "32", .to_format = "", .path = "\"20 04 24 78 2C 64 2D 00 FF FF\""};
   const auto c = plan_connections({c1});
   EXPECT_TRUE(c->diags.empty()) << c->diags[0].message;
-  EXPECT_EQ(assemblies(c->plan),
-            (std::vector<std::string>{"100:16:output", "120:10:configuration", "65535:32:input"}));
+  EXPECT_EQ(assemblies(c->plan), (std::vector<std::string>{"100:16:output", "120:10:configuration", "65535:32:input"}));
 }
 
 TEST(OpenerPlan, OpENersBufferGrowsWithTheLargestAssemblyOnly) {
@@ -258,7 +258,7 @@ TEST(OpenerPlan, AnAssemblyOverTheEncapsulationLengthIsRefused) {
 }
 
 TEST(OpenerPlan, ASizeThatDiffersFromTheNamedAssemblyIsRefused) {
-  conn input_20{.to_size = "20"};        // Assem130 states 32
+  conn input_20{.to_size = "20"};       // Assem130 states 32
   conn config_12{.config_size = "12"};  // Assem120 states 10
   for (const auto& [c1, size, what] :
        {std::tuple{input_20, "20", "input has 20 bytes but the assembly it names has 32"},
@@ -282,8 +282,13 @@ TEST(OpenerPlan, AnAssemblyThatStatesNoSizeTakesTheConnections) {
 
 TEST(OpenerPlan, TwoConnectionsGivingOneInstanceTwoSizesAreRefused) {
   // Connection2 (input only) reads T->O instance 130 as 8 bytes; Connection1 gave it 32.
-  conn in{.number = 2, .trigger = "0x82010002", .params = "0x44640205", .ot_format = "", .to_size = "8",
-          .to_format = "", .path = "\"20 04 24 78 2C C6 2C 82\""};
+  conn in{.number = 2,
+          .trigger = "0x82010002",
+          .params = "0x44640205",
+          .ot_format = "",
+          .to_size = "8",
+          .to_format = "",
+          .path = "\"20 04 24 78 2C C6 2C 82\""};
   const auto c = plan_connections({conn{}, in});
   expect_one(*c, diag_id::opener_assembly_size,
              "Connection2: assembly 130 has 8 bytes here but 32 as the input of an earlier connection; OpENer holds "
@@ -339,8 +344,7 @@ TEST(OpenerPlan, WithoutAServedConnectionOpENersDefaultsStay) {
 }
 
 TEST(OpenerPlan, AFileWithoutConnectionNHasNothingToServe) {
-  const std::string message =
-      "no ConnectionN in [Connection Manager]: OpENer would have no I/O connection to serve";
+  const std::string message = "no ConnectionN in [Connection Manager]: OpENer would have no I/O connection to serve";
   {
     const auto c = plan_eds(device_section() + assembly_section());
     expect_one(*c, diag_id::opener_no_connection, message, span{});

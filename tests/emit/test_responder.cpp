@@ -78,24 +78,29 @@ TEST(Responder, ProducedSizeFollowsInput1) {
 TEST(Responder, FragmentsTheProductNameAndAnswersErrors) {
   temp_dir dir("fragments");
   const auto exe = build_responder(dir, diffuse);
-  const auto answers = replay(dir, exe, {
-      "0x44E 00 4B 03 01 01 00",  // duplicate MAC check first
-      "0x44E 00 4B 03 01 01 00",  // explicit allocated
-      "0x44C 00 0E 01 01 07",     // product name: 29 body bytes, 5 fragments
-      "0x44C 80 C0 00", "0x44C 80 C1 00", "0x44C 80 C2 00", "0x44C 80 C3 00", "0x44C 80 C4 00",
-      "0x44C 00 0E 01 01 06",     // serial number from --serial
-      "0x44C 00 0E 01 01 08",     // no such attribute
-      "0x44C 00 10 01 01 01 02 00",  // identity is read-only
-      "0x44C 00 0E 64 01 01",     // no such object
-      "0x44C 00 05 01 01",        // no such service
-      "0x44C 00 4B 03 01 02 00",  // poll is not offered by the EDS
-      "0x44C 00 0E 05 04 07",     // COS not allocated yet
-      "0x44C 00 4B 03 01 10 00",  // COS
-      "0x44C 00 10 05 04 07 01 00",  // produced size is not settable
-      "0x44C 00 10 05 04 0C 03",  // deferred delete is for explicit connections only
-      "0x44C 00 4C 03 01 10",     // release COS
-      "0x44C 00 0E 05 04 08",     // gone again
-  });
+  const auto answers = replay(dir, exe,
+                              {
+                                  "0x44E 00 4B 03 01 01 00",  // duplicate MAC check first
+                                  "0x44E 00 4B 03 01 01 00",  // explicit allocated
+                                  "0x44C 00 0E 01 01 07",     // product name: 29 body bytes, 5 fragments
+                                  "0x44C 80 C0 00",
+                                  "0x44C 80 C1 00",
+                                  "0x44C 80 C2 00",
+                                  "0x44C 80 C3 00",
+                                  "0x44C 80 C4 00",
+                                  "0x44C 00 0E 01 01 06",        // serial number from --serial
+                                  "0x44C 00 0E 01 01 08",        // no such attribute
+                                  "0x44C 00 10 01 01 01 02 00",  // identity is read-only
+                                  "0x44C 00 0E 64 01 01",        // no such object
+                                  "0x44C 00 05 01 01",           // no such service
+                                  "0x44C 00 4B 03 01 02 00",     // poll is not offered by the EDS
+                                  "0x44C 00 0E 05 04 07",        // COS not allocated yet
+                                  "0x44C 00 4B 03 01 10 00",     // COS
+                                  "0x44C 00 10 05 04 07 01 00",  // produced size is not settable
+                                  "0x44C 00 10 05 04 0C 03",     // deferred delete is for explicit connections only
+                                  "0x44C 00 4C 03 01 10",        // release COS
+                                  "0x44C 00 0E 05 04 08",        // gone again
+                              });
   const std::vector<std::vector<std::string>> expected{
       {"0x44F 00 01 00 2B F5 0A 50"},
       {"0x44B 00 CB 00"},
@@ -104,7 +109,7 @@ TEST(Responder, FragmentsTheProductNameAndAnswersErrors) {
       {"0x44B 80 42 20 53 74 61 6E 64"},  // " Stand"
       {"0x44B 80 43 61 72 64 20 44 69"},  // "ard Di"
       {"0x44B 80 84 66 66 75 73 65"},     // "ffuse", last
-      {},                                  // the last acknowledgement ends it
+      {},                                 // the last acknowledgement ends it
       {"0x44B 00 8E 2B F5 0A 50"},
       {"0x44B 00 94 14 FF"},
       {"0x44B 00 94 0E FF"},

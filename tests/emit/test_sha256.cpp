@@ -26,7 +26,8 @@ TEST(Sha256, ExtensionsAgreeWithThePortableRounds) {
   std::uint32_t seed = 2025;
   for (int i = 0; i < 64 * 40; ++i) bytes.push_back(static_cast<char>((seed = seed * 1103515245u + 12345u) >> 23));
   for (std::size_t blocks = 0; blocks <= 40; ++blocks) {
-    std::uint32_t a[8] = {0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a, 0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
+    std::uint32_t a[8] = {0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a,
+                          0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
     std::uint32_t b[8];
     std::copy(std::begin(a), std::end(a), std::begin(b));
     const auto* p = reinterpret_cast<const std::uint8_t*>(bytes.data());
@@ -44,7 +45,8 @@ TEST(Sha256, EveryShortLengthMatchesThePortableDefinition) {
   for (std::size_t n = 0; n <= bytes.size(); ++n) {
     const auto got = sha256(std::string_view(bytes).substr(0, n));
     // The portable rounds on the same padded message.
-    std::uint32_t h[8] = {0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a, 0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
+    std::uint32_t h[8] = {0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a,
+                          0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
     std::string padded = bytes.substr(0, n) + '\x80';
     while (padded.size() % 64 != 56) padded.push_back('\0');
     for (int i = 7; i >= 0; --i) padded.push_back(static_cast<char>((static_cast<std::uint64_t>(n) * 8) >> (8 * i)));

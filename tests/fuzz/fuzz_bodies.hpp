@@ -27,8 +27,8 @@
 #include "edit/format.hpp"
 #include "emit/emit_json.hpp"
 #include "emit/header.hpp"
-#include "lower/lower.hpp"
 #include "live/session.hpp"
+#include "lower/lower.hpp"
 #include "lsp/jsonrpc.hpp"
 #include "lsp/server.hpp"
 #include "lsp/transport.hpp"
@@ -141,7 +141,8 @@ inline std::vector<std::string> lsp_document_session(std::string_view text) {
     const json tp = {{"textDocument", doc}, {"position", pos}};
     request("textDocument/hover", tp);
     request("textDocument/definition", tp);
-    request("textDocument/references", {{"textDocument", doc}, {"position", pos}, {"context", {{"includeDeclaration", true}}}});
+    request("textDocument/references",
+            {{"textDocument", doc}, {"position", pos}, {"context", {{"includeDeclaration", true}}}});
     request("textDocument/completion", tp);
     request("textDocument/prepareRename", tp);
     request("textDocument/documentHighlight", tp);
@@ -170,9 +171,10 @@ inline std::vector<std::string> lsp_document_session(std::string_view text) {
   // A query cut from the middle of the text, so the fuzzer steers it too.
   request("workspace/symbol", {{"query", std::string(text.substr(text.size() / 2, 4))}});
   request("textDocument/formatting", {{"textDocument", doc}, {"options", {{"tabSize", 4}, {"insertSpaces", true}}}});
-  request("textDocument/codeAction", {{"textDocument", doc},
-                                      {"range", {{"start", {{"line", 0}, {"character", 0}}}, {"end", {{"line", lines}, {"character", 0}}}}},
-                                      {"context", {{"diagnostics", json::array()}, {"only", {"source.fixAll"}}}}});
+  request("textDocument/codeAction",
+          {{"textDocument", doc},
+           {"range", {{"start", {{"line", 0}, {"character", 0}}}, {"end", {{"line", lines}, {"character", 0}}}}},
+           {"context", {{"diagnostics", json::array()}, {"only", {"source.fixAll"}}}}});
   // An incremental edit: a line from the middle copied to the start, then the
   // features once more on the changed text.
   const std::size_t mid = lines / 2;
@@ -312,7 +314,8 @@ inline std::string cip_body(std::string_view input) {
   auto inside = [&](const cip::decode_error& e) { return e.offset >= base && e.offset <= base + b.size(); };
   std::string broken;
   auto judge = [&](const char* what, const auto& r) {
-    if (!r.ok() && !inside(r.error()) && broken.empty()) broken = std::string(what) + ": error located outside the input";
+    if (!r.ok() && !inside(r.error()) && broken.empty())
+      broken = std::string(what) + ": error located outside the input";
   };
   if (cip::decode_encap_header(b).ok() && b.size() < cip::encap_header_size)
     return "a header decoded from fewer than 24 bytes";
@@ -327,7 +330,8 @@ inline std::string cip_body(std::string_view input) {
   judge("Forward_Close reply", cip::decode_forward_close(b, base));
   judge("Initiate_Upload reply", cip::decode_upload_offer(b, base));
   if (const auto p = cip::decode_upload_packet(b, base); p.ok()) {
-    if (2 + p->data.size() + (p->checksum ? 2 : 0) != b.size()) return "an upload packet's parts do not add up to its bytes";
+    if (2 + p->data.size() + (p->checksum ? 2 : 0) != b.size())
+      return "an upload packet's parts do not add up to its bytes";
   } else {
     judge("Upload_Transfer reply", p);
   }
@@ -401,7 +405,8 @@ inline std::string sim_body(std::string_view input) {
   const auto now = sim::clock::time_point{} + std::chrono::hours(1);
   const cip::byte_view b(reinterpret_cast<const std::uint8_t*>(input.data()) + 1, input.size() - 1);
   // A registered session and an open owner connection first, so deeper paths are reached.
-  (void)sim::handle_encap(s, l, cip::encode_encap(cip::command::register_session, 0, {}, cip::register_session_data()).value(), true, now);
+  (void)sim::handle_encap(
+      s, l, cip::encode_encap(cip::command::register_session, 0, {}, cip::register_session_data()).value(), true, now);
   switch (static_cast<std::uint8_t>(input[0]) % 6) {
     case 0:
     case 1: {
@@ -425,7 +430,8 @@ inline std::string sim_body(std::string_view input) {
     default:  // an upload or a parameter change reaches its later states only after earlier requests
       for (std::size_t at = 0; at < b.size();) {
         const std::size_t n = std::min<std::size_t>(b[at], b.size() - at - 1);
-        if (!cip::decode_reply(sim::handle_cip(s, l, b.subspan(at + 1, n), now), 0).ok()) return "a CIP reply the client cannot decode";
+        if (!cip::decode_reply(sim::handle_cip(s, l, b.subspan(at + 1, n), now), 0).ok())
+          return "a CIP reply the client cannot decode";
         at += 1 + n;
       }
       break;
@@ -443,8 +449,10 @@ inline std::string sim_body(std::string_view input) {
 // Get_Attribute_Single, so replies that pass every check reach the next request.
 inline std::string session_check_transmit(const live::session& s, const cip::bytes& out) {
   const auto h = cip::decode_encap_header(out);
-  if (!h || h->length + cip::encap_header_size != out.size()) return "a request whose length field does not count its bytes";
-  if (h->session != s.handle() && s.handle() != 0) return "a request carrying another session handle than the one granted";
+  if (!h || h->length + cip::encap_header_size != out.size())
+    return "a request whose length field does not count its bytes";
+  if (h->session != s.handle() && s.handle() != 0)
+    return "a request carrying another session handle than the one granted";
   return {};
 }
 
@@ -468,7 +476,8 @@ inline std::string session_body(std::string_view input) {
       if (auto broken = session_check_transmit(s, *out); !broken.empty()) return broken;
     while (auto ev = s.poll_event())
       if (auto broken = session_check_event(s, *ev); !broken.empty()) return broken;
-    const bool waiting = s.current() == live::session::state::registering || s.current() == live::session::state::awaiting;
+    const bool waiting =
+        s.current() == live::session::state::registering || s.current() == live::session::state::awaiting;
     if (waiting != s.next_deadline().has_value()) return "a deadline without a request under way, or the reverse";
     return {};
   };
@@ -498,10 +507,11 @@ inline std::string session_body(std::string_view input) {
       case 0: s.list_identity(now); break;
       case 1: s.list_services(now); break;
       default:
-        s.request(cip::service::get_attribute_single,
-                  cip::encode_request(cip::service::get_attribute_single, cip::logical_path(cip::class_id::identity, 1, 7))
-                      .value(),
-                  now);
+        s.request(
+            cip::service::get_attribute_single,
+            cip::encode_request(cip::service::get_attribute_single, cip::logical_path(cip::class_id::identity, 1, 7))
+                .value(),
+            now);
     }
     if (auto broken = drain(); !broken.empty()) return broken;
   }

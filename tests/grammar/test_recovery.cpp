@@ -7,21 +7,20 @@ namespace {
 
 TEST(Recovery, EveryErrorOfAFileIsReportedAtItsPlace) {
   const auto p = parse_text(
-      "[File]\n"                        // 1
-      "DescText = \"x\"\n"              // 2: missing `;`
-      "CreateDate = 01-01-2020;\n"      // 3
-      "[Device\n"                       // 4: missing `]`
-      "VendCode = 1 2 3 \"x\";\n"       // 5: missing `,`
-      "ProdName \"abc\";\n"             // 6: missing `=`
-      "Catalog = \"a\" ] junk;\n"       // 7: unexpected `]`
-      "  -- not a comment --\n"         // 8: stray line
-      "Icon = \"\\q\";\n"               // 9: invalid escape
-      "MajRev = 1;\n");                 // 10
+      "[File]\n"                    // 1
+      "DescText = \"x\"\n"          // 2: missing `;`
+      "CreateDate = 01-01-2020;\n"  // 3
+      "[Device\n"                   // 4: missing `]`
+      "VendCode = 1 2 3 \"x\";\n"   // 5: missing `,`
+      "ProdName \"abc\";\n"         // 6: missing `=`
+      "Catalog = \"a\" ] junk;\n"   // 7: unexpected `]`
+      "  -- not a comment --\n"     // 8: stray line
+      "Icon = \"\\q\";\n"           // 9: invalid escape
+      "MajRev = 1;\n");             // 10
   EXPECT_EQ(p.diag_list(), (strings{"syntax-missing-semicolon@2:15", "syntax-section-header@4:8",
-                                    "syntax-missing-comma@5:17", "syntax-expected-equals@6:9",
-                                    "syntax-unexpected@7:15", "syntax-stray@8:3", "syntax-invalid-escape@9:9"}));
-  EXPECT_EQ(p.keywords(),
-            (strings{"DescText", "CreateDate", "VendCode", "ProdName", "Catalog", "Icon", "MajRev"}));
+                                    "syntax-missing-comma@5:17", "syntax-expected-equals@6:9", "syntax-unexpected@7:15",
+                                    "syntax-stray@8:3", "syntax-invalid-escape@9:9"}));
+  EXPECT_EQ(p.keywords(), (strings{"DescText", "CreateDate", "VendCode", "ProdName", "Catalog", "Icon", "MajRev"}));
   EXPECT_EQ(p.fields("CreateDate"), strings{"01-01-2020"});
   EXPECT_EQ(p.fields("VendCode"), (strings{"1 2 3", "\"x\""}));
   EXPECT_EQ(p.fields("Catalog"), strings{"\"a\""});
@@ -116,10 +115,17 @@ TEST(Recovery, WideEncodingsAndBinaryFormatsAreOneDiagnostic) {
   const std::string u32le = "\xFF\xFE\0\0[\0\0\0"s;
   const std::string u32be = "\0\0\xFE\xFF\0\0\0["s;
   const std::vector<std::pair<std::string, std::string>> cases{
-      {u16le, "input-utf16@1:1"}, {u16be, "input-utf16@1:1"}, {bare16, "input-utf16@1:1"},
-      {u32le, "input-utf32@1:1"}, {u32be, "input-utf32@1:1"},
-      {"\x7F" "ELF\x02\x01\x01\0\0\0"s, "input-binary@1:1"}, {"PK\x03\x04\x14\0\0\0"s, "input-binary@1:1"},
-      {"\x1F\x8B\x08\0"s, "input-binary@1:1"}, {"%PDF-1.7\n"s, "input-binary@1:1"},
+      {u16le, "input-utf16@1:1"},
+      {u16be, "input-utf16@1:1"},
+      {bare16, "input-utf16@1:1"},
+      {u32le, "input-utf32@1:1"},
+      {u32be, "input-utf32@1:1"},
+      {"\x7F"
+       "ELF\x02\x01\x01\0\0\0"s,
+       "input-binary@1:1"},
+      {"PK\x03\x04\x14\0\0\0"s, "input-binary@1:1"},
+      {"\x1F\x8B\x08\0"s, "input-binary@1:1"},
+      {"%PDF-1.7\n"s, "input-binary@1:1"},
   };
   for (const auto& [bytes, want] : cases) {
     const auto p = parse_text(bytes);
@@ -141,12 +147,13 @@ TEST(Recovery, WideEncodingsAndBinaryFormatsAreOneDiagnostic) {
 TEST(Recovery, TriviaBeforeAMissingTokenIsTakenOnceAndStaysOutside) {
   const auto p = parse_text("[S]\nA = { 1 $ one\n  \t\nB = \"x\" $ two\r\n \"y\"  $ three\n;\n");
   EXPECT_EQ(p.diag_list(), (strings{"syntax-missing-rbrace@2:8", "syntax-missing-semicolon@2:8"}));
-  EXPECT_EQ(p.tokens(), (strings{"lbracket:[", "section-name:S", "rbracket:]", "newline:\n", "keyword:A",
-                                 "blank: ", "equals:=", "blank: ", "lbrace:{", "blank: ", "bare:1", "blank: ",
-                                 "comment:$ one", "newline:\n", "blank:  \t", "newline:\n", "keyword:B",
-                                 "blank: ", "equals:=", "blank: ", "string:\"x\"", "blank: ", "comment:$ two",
-                                 "newline:\r\n", "blank: ", "string:\"y\"", "blank:  ", "comment:$ three",
-                                 "newline:\n", "semicolon:;", "newline:\n"}));
+  EXPECT_EQ(p.tokens(), (strings{"lbracket:[",   "section-name:S", "rbracket:]",      "newline:\n",   "keyword:A",
+                                 "blank: ",      "equals:=",       "blank: ",         "lbrace:{",     "blank: ",
+                                 "bare:1",       "blank: ",        "comment:$ one",   "newline:\n",   "blank:  \t",
+                                 "newline:\n",   "keyword:B",      "blank: ",         "equals:=",     "blank: ",
+                                 "string:\"x\"", "blank: ",        "comment:$ two",   "newline:\r\n", "blank: ",
+                                 "string:\"y\"", "blank:  ",       "comment:$ three", "newline:\n",   "semicolon:;",
+                                 "newline:\n"}));
   EXPECT_EQ(p.text(p.entry("A").where), "A = { 1");
   EXPECT_EQ(p.fields("A"), strings{"{ 1"});
   EXPECT_EQ(p.fields("B"), strings{"\"x\" $ two\r\n \"y\""});

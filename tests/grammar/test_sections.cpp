@@ -15,8 +15,8 @@ TEST(Sections, SimpleHeader) {
 }
 
 TEST(Sections, NamesInRealUse) {
-  const auto p = parse_text(
-      "[1_LEOSUPPORT]\n[TCP/IP Interface Class]\n[Device Classification]\n[IO_Info]\n[Ver.2-x\\y]\n");
+  const auto p =
+      parse_text("[1_LEOSUPPORT]\n[TCP/IP Interface Class]\n[Device Classification]\n[IO_Info]\n[Ver.2-x\\y]\n");
   EXPECT_TRUE(p.diags().empty());
   EXPECT_EQ(p.section_names(),
             (strings{"1_LEOSUPPORT", "TCP/IP Interface Class", "Device Classification", "IO_Info", "Ver.2-x\\y"}));

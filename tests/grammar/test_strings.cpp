@@ -32,8 +32,7 @@ TEST_P(InvalidEscape, IsReportedAtTheBackslashAndTheStringKept) {
 
 INSTANTIATE_TEST_SUITE_P(Strings, InvalidEscape,
                          ::testing::Values(bad_escape{R"("bad \q escape")", R"(\q)", 10},
-                                           bad_escape{R"("\x4")", R"(\x)", 6},
-                                           bad_escape{R"("\xG1")", R"(\x)", 6},
+                                           bad_escape{R"("\x4")", R"(\x)", 6}, bad_escape{R"("\xG1")", R"(\x)", 6},
                                            bad_escape{R"("ok\n" "\8")", R"(\8)", 13},
                                            bad_escape{R"(L"\u12")", R"(\u)", 7},
                                            bad_escape{R"("\u0041 needs L")", R"(\u)", 6}));

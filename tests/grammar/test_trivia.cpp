@@ -63,10 +63,9 @@ TEST_P(LineEndings, AreOneNewlineTokenEachAndCountOneLine) {
   EXPECT_EQ(p.diag_list(), strings{"syntax-missing-semicolon@4:6"});
 }
 
-INSTANTIATE_TEST_SUITE_P(Trivia, LineEndings, ::testing::Values("\n", "\r\n", "\r"),
-                         [](const auto& info) {
-                           return std::string(info.param) == "\n" ? "LF" : std::string(info.param) == "\r" ? "CR" : "CRLF";
-                         });
+INSTANTIATE_TEST_SUITE_P(Trivia, LineEndings, ::testing::Values("\n", "\r\n", "\r"), [](const auto& info) {
+  return std::string(info.param) == "\n" ? "LF" : std::string(info.param) == "\r" ? "CR" : "CRLF";
+});
 
 TEST(Trivia, MixedLineEndingsInOneFile) {
   const auto p = parse_text("[S]\r\nA = 1;\nB = 2;\rC = 3;\n\rD = 4 \"x\";\r\n");
@@ -125,7 +124,9 @@ TEST(Trivia, Utf8ByteOrderMarkAtTheStartIsTrivia) {
 TEST(Trivia, Utf8ByteOrderMarkElsewhereIsStrayText) {
   // Only a file's first bytes are a byte-order mark; inside, it is text
   // (two files concatenated, say), reported like any other stray bytes.
-  const auto p = parse_text("[S]\n\xEF\xBB\xBF" "A = 1;\n");
+  const auto p = parse_text(
+      "[S]\n\xEF\xBB\xBF"
+      "A = 1;\n");
   EXPECT_EQ(p.diag_list(), strings{"syntax-stray@2:1"});
   const auto q = parse_text("\xEF\xBB\xBF\xEF\xBB\xBF[S]\n");
   EXPECT_EQ(q.diag_list(), strings{"syntax-stray@1:1"});

@@ -21,10 +21,10 @@ TEST_P(BareValue, IsOneBareFieldWithItsExactText) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Values, BareValue,
-                         ::testing::Values("0x000F", "0XFF", "404", "-32768", "+5", ".004", "1.5e-3",
-                                           "11-03-2009", "9:42:45", "1.10", "3.001", "Param12", "AssemExa102",
-                                           "EtherNetIP", "1_RSNetWorx_Connectable_Module", "65535_Chassis",
-                                           "20 66 24 01", "20\t04  24"));
+                         ::testing::Values("0x000F", "0XFF", "404", "-32768", "+5", ".004", "1.5e-3", "11-03-2009",
+                                           "9:42:45", "1.10", "3.001", "Param12", "AssemExa102", "EtherNetIP",
+                                           "1_RSNetWorx_Connectable_Module", "65535_Chassis", "20 66 24 01",
+                                           "20\t04  24"));
 
 TEST(Values, RevisionKeepsItsTrailingZero) {
   const auto p = parse_text("[S]\nRev = 1.10;\nOther = 1.1;\n");

@@ -46,7 +46,8 @@ inline cip::bytes read_message(int s, const std::atomic<bool>& stop) {
 }
 
 // A reply echoing the request's context, with the given command, handle and data.
-inline cip::bytes reply_to(const cip::bytes& req, std::uint16_t command, std::uint32_t session, const cip::bytes& data) {
+inline cip::bytes reply_to(const cip::bytes& req, std::uint16_t command, std::uint32_t session,
+                           const cip::bytes& data) {
   cip::sender_context ctx{};
   std::copy(req.begin() + 12, req.begin() + 20, ctx.begin());
   return cip::encode_encap(static_cast<cip::command>(command), session, ctx, data).value();

@@ -63,8 +63,9 @@ class pcap_writer {
     be16(b, static_cast<std::uint16_t>(v));
   }
   void packet(bool a_to_b, std::uint8_t proto, const cip::bytes& l4) {
-    cip::bytes f = {0x02, 0, 0, 0, 0, static_cast<std::uint8_t>(a_to_b ? 2 : 1),
-                    0x02, 0, 0, 0, 0, static_cast<std::uint8_t>(a_to_b ? 1 : 2), 0x08, 0x00};
+    cip::bytes f = {0x02, 0,   0, 0, 0, static_cast<std::uint8_t>(a_to_b ? 2 : 1),
+                    0x02, 0,   0, 0, 0, static_cast<std::uint8_t>(a_to_b ? 1 : 2),
+                    0x08, 0x00};
     cip::bytes ip = {0x45, 0};
     be16(ip, static_cast<std::uint16_t>(20 + l4.size()));
     be16(ip, ++ip_id_);
@@ -90,7 +91,9 @@ class pcap_writer {
     write(rec);
     write(f);
   }
-  void write(const cip::bytes& b) { out_.write(reinterpret_cast<const char*>(b.data()), static_cast<std::streamsize>(b.size())); }
+  void write(const cip::bytes& b) {
+    out_.write(reinterpret_cast<const char*>(b.data()), static_cast<std::streamsize>(b.size()));
+  }
 
   std::ofstream out_;
   std::map<std::pair<bool, std::uint16_t>, std::uint32_t> seq_;

@@ -48,15 +48,15 @@ TEST(cip_encap, header_decodes_and_short_header_is_located) {
 
 // OpENer's reply, as encap.c EncodeListIdentityCipIdentityItem lays it out.
 const char* const list_identity_reply_data =
-    "01 00 "                                     // one item
-    "0C 00 2B 00 "                               // identity item, 43 bytes:
-    "01 00 "                                     // encapsulation version 1
+    "01 00 "                                            // one item
+    "0C 00 2B 00 "                                      // identity item, 43 bytes:
+    "01 00 "                                            // encapsulation version 1
     "00 02 AF 12 C6 33 64 02 00 00 00 00 00 00 00 00 "  // sockaddr (big-endian): AF_INET, 44818, 198.51.100.2
-    "01 00 0C 00 E9 FD "                         // vendor 1, type 12, product code 65001 (0xFDE9)
-    "02 03 30 00 "                               // revision 2.3, status 0x0030
-    "15 CD 5B 07 "                               // serial 123456789 (0x075BCD15)
-    "09 4F 70 45 4E 65 72 20 50 43 "             // "OpENer PC"
-    "03";                                        // state 3
+    "01 00 0C 00 E9 FD "                                // vendor 1, type 12, product code 65001 (0xFDE9)
+    "02 03 30 00 "                                      // revision 2.3, status 0x0030
+    "15 CD 5B 07 "                                      // serial 123456789 (0x075BCD15)
+    "09 4F 70 45 4E 65 72 20 50 43 "                    // "OpENer PC"
+    "03";                                               // state 3
 // 2 + 16 + 6 + 4 + 4 + 10 + 1 = 43 bytes of item.
 
 TEST(cip_encap, list_identity_reply) {
@@ -181,22 +181,22 @@ TEST(cip_connection_manager, network_parameters) {
 TEST(cip_connection_manager, forward_open_of_opener_connection1) {
   const auto b = encode_forward_open(live_test::opener_connection1_request()).value();
   EXPECT_EQ(hex(b),
-            "54 02 20 06 24 01 "         // Forward_Open to class 6 instance 1
-            "0A 0E "                     // priority/tick, timeout ticks
-            "00 00 00 00 01 00 44 45 "   // O->T id (target picks), T->O id
-            "01 45 FF FF 65 64 73 63 "   // serial, vendor, originator serial
-            "02 00 00 00 "               // multiplier x16, reserved
-            "30 75 00 00 26 40 "         // O->T RPI 30 ms, 38 bytes P2P
-            "30 75 00 00 22 40 "         // T->O RPI 30 ms, 34 bytes P2P
-            "01 09 "                     // class 1 cyclic client; path 9 words
+            "54 02 20 06 24 01 "              // Forward_Open to class 6 instance 1
+            "0A 0E "                          // priority/tick, timeout ticks
+            "00 00 00 00 01 00 44 45 "        // O->T id (target picks), T->O id
+            "01 45 FF FF 65 64 73 63 "        // serial, vendor, originator serial
+            "02 00 00 00 "                    // multiplier x16, reserved
+            "30 75 00 00 26 40 "              // O->T RPI 30 ms, 38 bytes P2P
+            "30 75 00 00 22 40 "              // T->O RPI 30 ms, 34 bytes P2P
+            "01 09 "                          // class 1 cyclic client; path 9 words
             "34 04 01 00 0C 00 E9 FD 82 03 "  // key: vendor 1, type 12, code 65001, 2 (compatible).3
             "20 04 24 97 2C 96 2C 64");
 }
 
 TEST(cip_connection_manager, forward_open_reply_and_close) {
   // ids 0x11111111 / 0x22222222, serial, vendor, originator serial, two APIs, 0 words, reserved
-  auto r = decode_forward_open_ok(
-      unhex("11 11 11 11 22 22 22 22 01 45 FF FF 65 64 73 63 30 75 00 00 30 75 00 00 00 00"), 0);
+  auto r =
+      decode_forward_open_ok(unhex("11 11 11 11 22 22 22 22 01 45 FF FF 65 64 73 63 30 75 00 00 30 75 00 00 00 00"), 0);
   ASSERT_TRUE(r.ok());
   EXPECT_EQ(r->to_connection_id, 0x22222222u);
   EXPECT_EQ(r->to_api_us, 30000u);
@@ -231,7 +231,8 @@ TEST(cip_status, words_for_codes) {
   EXPECT_EQ(words_of(extended_status{0x0128}), "invalid T->O size");
   EXPECT_EQ(words_of(general_status{0x08}), "service not supported");
   EXPECT_EQ(words_of(encap_status{0x64}), "invalid session handle");
-  EXPECT_EQ(describe_status(0x01, std::vector<std::uint16_t>{0x9999}), "0x01 connection failure, extended 0x9999 (unknown code)");
+  EXPECT_EQ(describe_status(0x01, std::vector<std::uint16_t>{0x9999}),
+            "0x01 connection failure, extended 0x9999 (unknown code)");
 }
 
 TEST(cip_connection_manager, params32_every_field_both_ways) {
@@ -317,8 +318,9 @@ TEST(cip_encap, list_identity_reply_as_a_device_sends_it) {
 // Items of other types in a ListServices reply are skipped, not read as
 // services: a 2-byte item 0x000C, then the Communications service.
 TEST(cip_encap, list_services_reply_skips_other_items) {
-  const auto data = unhex("02 00 0C 00 02 00 AA BB "
-                          "00 01 14 00 01 00 20 01 43 6F 6D 6D 75 6E 69 63 61 74 69 6F 6E 73 00 00");
+  const auto data = unhex(
+      "02 00 0C 00 02 00 AA BB "
+      "00 01 14 00 01 00 20 01 43 6F 6D 6D 75 6E 69 63 61 74 69 6F 6E 73 00 00");
   auto s = decode_list_services(data, 24);
   ASSERT_TRUE(s.ok()) << s.error().what;
   ASSERT_EQ(s->size(), 1u);

@@ -19,35 +19,41 @@ void expect_unique(std::initializer_list<T> codes, const char* table) {
 
 TEST(cip_codes, each_code_once_per_table) {
 #define ENIP_COMMAND(sym, code, name) code,
-  expect_unique<unsigned>({
+  expect_unique<unsigned>(
+      {
 #include "cip/codes.def"
-                          },
-                          "commands");
+      },
+      "commands");
 #define CPF_ITEM(sym, code, name) code,
-  expect_unique<unsigned>({
+  expect_unique<unsigned>(
+      {
 #include "cip/codes.def"
-                          },
-                          "items");
+      },
+      "items");
 #define CIP_CLASS(sym, code, name) code,
-  expect_unique<unsigned>({
+  expect_unique<unsigned>(
+      {
 #include "cip/codes.def"
-                          },
-                          "classes");
+      },
+      "classes");
 #define CIP_SERVICE(sym, code, name) code,
-  expect_unique<unsigned>({
+  expect_unique<unsigned>(
+      {
 #include "cip/codes.def"
-                          },
-                          "services");
+      },
+      "services");
 #define GENERAL_STATUS(sym, code, words) code,
-  expect_unique<unsigned>({
+  expect_unique<unsigned>(
+      {
 #include "cip/codes.def"
-                          },
-                          "general statuses");
+      },
+      "general statuses");
 #define EXTENDED_STATUS(sym, code, words) code,
-  expect_unique<unsigned>({
+  expect_unique<unsigned>(
+      {
 #include "cip/codes.def"
-                          },
-                          "extended statuses");
+      },
+      "extended statuses");
 }
 
 TEST(cip_codes, names_and_words_by_code) {
@@ -72,7 +78,8 @@ TEST(cip_codes, a_class_service_is_named_only_with_its_class) {
 
 TEST(cip_codes, identity_status_word_in_words) {
   EXPECT_EQ(describe_identity_status(0x0000), "0x0000 (self-testing or unknown)");
-  EXPECT_EQ(describe_identity_status(0x0465), "0x0465 (owned, configured, major recoverable fault, at least one I/O connection in run mode)");
+  EXPECT_EQ(describe_identity_status(0x0465),
+            "0x0465 (owned, configured, major recoverable fault, at least one I/O connection in run mode)");
   EXPECT_EQ(describe_identity_status(0x00F0), "0x00F0");  // states 8-15 have no words
   EXPECT_EQ(device_state_of(with_device_state(0x0401, device_state::io_idle)), device_state::io_idle);
 }

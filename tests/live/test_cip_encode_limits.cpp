@@ -29,8 +29,8 @@ TEST(cip_encode_limits, encapsulation_body_over_65535_bytes_is_refused) {
   EXPECT_EQ((*ok)[2], 0xFF);
   EXPECT_EQ((*ok)[3], 0xFF);
   expect_refused(encode_encap(command::send_rr_data, 1, {}, over), "encapsulation length", 65536, 65535);
-  expect_refused(encode_encap_reply(command::send_rr_data, 1, encap_status::success, {}, over),
-                 "encapsulation length", 65536, 65535);
+  expect_refused(encode_encap_reply(command::send_rr_data, 1, encap_status::success, {}, over), "encapsulation length",
+                 65536, 65535);
 }
 
 TEST(cip_encode_limits, cpf_item_over_65535_bytes_is_refused) {
@@ -120,8 +120,8 @@ TEST(cip_encode_limits, get_attribute_all_reply_too_large_for_sendrrdata_is_refu
   // which holds the interface handle, timeout and item headers too.
   const auto most = send_rr_data(bytes(65535, 0), 0);
   ASSERT_TRUE(most.ok());
-  expect_refused(encode_encap_reply(command::send_rr_data, 1, encap_status::success, {}, *most),
-                 "encapsulation length", most->size(), 65535);
+  expect_refused(encode_encap_reply(command::send_rr_data, 1, encap_status::success, {}, *most), "encapsulation length",
+                 most->size(), 65535);
 }
 
 TEST(cip_encode_limits, class1_frame_over_max_io_frame_size_is_refused) {

@@ -20,8 +20,8 @@
 #include "cip/device_reply.hpp"
 #include "cip/encap.hpp"
 #include "cip/io_frame.hpp"
-#include "netns/live_support.hpp"
 #include "loopback_server.hpp"
+#include "netns/live_support.hpp"
 #include "netns/run_edsc.hpp"
 #include "test_paths.hpp"
 
@@ -72,13 +72,13 @@ cip::bytes cip_reply(std::uint8_t service, const cip::bytes& data, std::uint8_t 
 
 // How the stand-in departs from OpENer besides its frames.
 struct quirks {
-  bool one_byte_sizes = false;       // an Assembly size in one byte where it takes two
-  std::uint16_t open_refused = 0;    // Forward_Open refused: 0x01 with this extended status
-  bool close_refused = false;        // Forward_Close refused: 0x01
-  bool silent_io = false;            // no T->O frame at all
-  bool hang_up_at_close = false;     // the session ends at the Forward_Close, unanswered
-  std::uint8_t missing_instance = 0; // Assembly attribute 4 of it: 0x05 path destination unknown
-  bool no_assembly_class = false;    // the class (instance 0) answers 0x05 too
+  bool one_byte_sizes = false;         // an Assembly size in one byte where it takes two
+  std::uint16_t open_refused = 0;      // Forward_Open refused: 0x01 with this extended status
+  bool close_refused = false;          // Forward_Close refused: 0x01
+  bool silent_io = false;              // no T->O frame at all
+  bool hang_up_at_close = false;       // the session ends at the Forward_Close, unanswered
+  std::uint8_t missing_instance = 0;   // Assembly attribute 4 of it: 0x05 path destination unknown
+  bool no_assembly_class = false;      // the class (instance 0) answers 0x05 too
   std::atomic<int>* opened = nullptr;  // counts the connections granted
   std::atomic<int>* closed = nullptr;  // counts the Forward_Closes received
 };
@@ -117,7 +117,8 @@ void fake_device(int s, const std::atomic<bool>& stop, quirks q) {
       cip::bytes d;
       cip::put_u32(d, next_id + 0x100);
       cip::put_u32(d, next_id);
-      d.insert(d.end(), request.begin() + static_cast<long>(data_at) + 10, request.begin() + static_cast<long>(data_at) + 18);
+      d.insert(d.end(), request.begin() + static_cast<long>(data_at) + 10,
+               request.begin() + static_cast<long>(data_at) + 18);
       cip::put_u32(d, 10000);
       cip::put_u32(d, 10000);
       cip::put_u16(d, 0);
@@ -175,10 +176,12 @@ TEST_F(live_fake_device, verify_takes_an_assembly_size_of_one_byte_for_no_size) 
 TEST_F(live_fake_device, a_refusal_is_told_with_the_eds_values_it_concerns) {
   const auto eds = std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds";
   for (const auto& [ext, words] :
-       {std::pair<std::uint16_t, const char*>{0x0129, "refused the 10 bytes of configuration the EDS gives instance 151"},
+       {std::pair<std::uint16_t, const char*>{0x0129,
+                                              "refused the 10 bytes of configuration the EDS gives instance 151"},
         {0x012A, "the path names O->T instance 150, T->O instance 100, configuration instance 151"}}) {
     SCOPED_TRACE(ext);
-    loopback_server device([ext](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {.open_refused = ext}); });
+    loopback_server device(
+        [ext](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {.open_refused = ext}); });
     const auto r = run_edsc("verify --live " + device.address() + " " + quoted(eds) + " --connections --color never");
     EXPECT_EQ(r.status, 1) << r.output;
     EXPECT_NE(r.output.find("Connection1 refused: 0x01"), std::string::npos) << r.output;
@@ -273,8 +276,9 @@ TEST_F(live_fake_device, an_assembly_instance_the_device_lacks_is_an_error_at_it
       << r.output;
   EXPECT_NE(r.output.find("no such instance"), std::string::npos) << r.output;
 
-  loopback_server classless(
-      [](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {.missing_instance = 151, .no_assembly_class = true}); });
+  loopback_server classless([](int s, const std::atomic<bool>& stop) {
+    fake_device(s, stop, {.missing_instance = 151, .no_assembly_class = true});
+  });
   const auto n = run_edsc("verify --live " + classless.address() + " " + quoted(opener_eds) + " --color never");
   EXPECT_EQ(n.status, 0) << n.output;
   EXPECT_NE(n.output.find("Assem151: the device does not give the size of assembly instance 151 (0x05 path "
@@ -288,7 +292,8 @@ TEST_F(live_fake_device, an_assembly_instance_the_device_lacks_is_an_error_at_it
 // busy, exit 2; the other connections are still checked.
 TEST_F(live_fake_device, an_ownership_conflict_is_a_busy_device_not_an_eds_error) {
   loopback_server device([](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {.open_refused = 0x0106}); });
-  const auto r = run_edsc("verify --live " + device.address() + " " + quoted(opener_eds) + " --connections --color never");
+  const auto r =
+      run_edsc("verify --live " + device.address() + " " + quoted(opener_eds) + " --connections --color never");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_EQ(r.output.find("[live-connection-refused]"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("0 errors"), std::string::npos) << r.output;
@@ -304,13 +309,11 @@ TEST_F(live_fake_device, an_ownership_conflict_is_a_busy_device_not_an_eds_error
 // reached, and exits 128 + 15, long before the watch would have ended.
 TEST_F(live_fake_device, a_signal_midway_closes_the_connection_and_reports_what_was_found) {
   std::atomic<int> opened{0}, closed{0};
-  loopback_server device([&](int s, const std::atomic<bool>& stop) {
-    fake_device(s, stop, {.opened = &opened, .closed = &closed});
-  });
+  loopback_server device(
+      [&](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {.opened = &opened, .closed = &closed}); });
   const auto log = (std::filesystem::temp_directory_path() / ("edsc-signal-" + std::to_string(::getpid()))).string();
-  edsc_child edsc({"verify", "--live", device.address(), opener_eds, "--connections", "--watch", "30", "--color",
-                   "never"},
-                  log);
+  edsc_child edsc(
+      {"verify", "--live", device.address(), opener_eds, "--connections", "--watch", "30", "--color", "never"}, log);
   ASSERT_TRUE(edsc.started());
   for (int i = 0; i < 600 && opened == 0; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
   ASSERT_EQ(opened, 1);
@@ -349,7 +352,8 @@ TEST_F(live_fake_device, an_interrupt_ignored_on_entry_stays_ignored) {
 // Forward_Close): the checks made so far stay in the report, the failure
 // follows it, exit 2.
 TEST_F(live_fake_device, a_device_lost_midway_keeps_the_report_so_far) {
-  loopback_server device([](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {.hang_up_at_close = true}); });
+  loopback_server device(
+      [](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {.hang_up_at_close = true}); });
   const auto r = run_edsc("verify --live " + device.address() + " " + quoted(opener_eds) +
                           " --connections --watch 0.3 --timeout 1 --color never");
   EXPECT_EQ(r.status, 2) << r.output;
@@ -367,15 +371,15 @@ TEST_F(live_fake_device, progress_shows_on_a_terminal_only) {
   const auto args = "verify --live " + device.address() + " " + quoted(opener_eds) + " --connections --watch 0.8";
   const auto piped = run_edsc(args);
   EXPECT_EQ(piped.output.find("edsc: opening Connection"), std::string::npos) << piped.output;
-  const auto tty = shell("python3 -c 'import pty, sys; sys.exit(pty.spawn(sys.argv[1:]) >> 8)' " +
-                         quoted(EDSC_BINARY) + " " + args + " </dev/null 2>&1");
+  const auto tty = shell("python3 -c 'import pty, sys; sys.exit(pty.spawn(sys.argv[1:]) >> 8)' " + quoted(EDSC_BINARY) +
+                         " " + args + " </dev/null 2>&1");
   EXPECT_EQ(tty.status, 1) << tty.out;
   EXPECT_NE(tty.out.find("edsc: opening Connection2 (2 of 3) and watching its I/O for 0.8 s"), std::string::npos)
       << tty.out;
   EXPECT_NE(tty.out.find("\r\033[K"), std::string::npos) << tty.out;  // erased, not left in the report
-  const auto quick = shell("python3 -c 'import pty, sys; sys.exit(pty.spawn(sys.argv[1:]) >> 8)' " +
-                           quoted(EDSC_BINARY) + " verify --live " + device.address() + " " + quoted(opener_eds) +
-                           " </dev/null 2>&1");
+  const auto quick =
+      shell("python3 -c 'import pty, sys; sys.exit(pty.spawn(sys.argv[1:]) >> 8)' " + quoted(EDSC_BINARY) +
+            " verify --live " + device.address() + " " + quoted(opener_eds) + " </dev/null 2>&1");
   EXPECT_EQ(quick.out.find("edsc: "), std::string::npos) << quick.out;
 }
 
@@ -412,14 +416,18 @@ void probe_device(int s, const std::atomic<bool>& stop, probe_quirks q) {
       const auto instance = request[5], attribute = request[7];
       if (instance == q.hang_up_at && attribute == 4) return;
       if (instance == 0 && attribute == 2)
-        answer = cip_reply(service, {static_cast<std::uint8_t>(q.max_instance), static_cast<std::uint8_t>(q.max_instance >> 8)});
-      else if (instance == 1) answer = cip_reply(service, {0x20});
-      else answer = cip_reply(service, {0x20, 0});
+        answer = cip_reply(service,
+                           {static_cast<std::uint8_t>(q.max_instance), static_cast<std::uint8_t>(q.max_instance >> 8)});
+      else if (instance == 1)
+        answer = cip_reply(service, {0x20});
+      else
+        answer = cip_reply(service, {0x20, 0});
     } else if (service == 0x4B) {  // Initiate_Upload: a file of 4 bytes, transfers of up to 255
       answer = cip_reply(service, {4, 0, 0, 0, 0xFF});
     } else if (service == 0x4F) {  // Upload_Transfer
       const auto n = request.back();
-      answer = !q.typed_transfers ? cip_reply(service, {n}) : cip_reply(service, {n, n == 0 ? std::uint8_t{0} : std::uint8_t{5}, 'E', 'D'});
+      answer = !q.typed_transfers ? cip_reply(service, {n})
+                                  : cip_reply(service, {n, n == 0 ? std::uint8_t{0} : std::uint8_t{5}, 'E', 'D'});
     } else {
       answer = cip_reply(service, {}, 0x08);
     }
@@ -459,7 +467,8 @@ TEST_F(live_fake_device, probe_stops_where_the_device_hangs_up) {
 auto refused_upload(probe_quirks q) {
   loopback_server device([q](int s, const std::atomic<bool>& stop) { probe_device(s, stop, q); });
   const auto out =
-      (std::filesystem::temp_directory_path() / ("edsc-refused-upload-" + std::to_string(::getpid()) + ".eds")).string();
+      (std::filesystem::temp_directory_path() / ("edsc-refused-upload-" + std::to_string(::getpid()) + ".eds"))
+          .string();
   std::filesystem::remove(out);
   auto r = run_edsc("probe " + device.address() + " --timeout 2 --upload-eds " + quoted(out));
   EXPECT_EQ(r.status, 2) << r.output;

@@ -34,7 +34,6 @@ void stay_silent(int s, const std::atomic<bool>& stop) {
   }
 }
 
-
 struct hostile_case {
   const char* name;
   behaviour server;
@@ -76,9 +75,7 @@ const hostile_case cases[] = {
        stay_silent(s, stop);
      },
      "sent 4 of the 100 bytes"},
-    {"silence",
-     [](int s, const std::atomic<bool>& stop) { stay_silent(s, stop); },
-     "within the timeout"},
+    {"silence", [](int s, const std::atomic<bool>& stop) { stay_silent(s, stop); }, "within the timeout"},
     {"reset_mid_reply",
      [](int s, const std::atomic<bool>& stop) {
        const auto req = read_message(s, stop);

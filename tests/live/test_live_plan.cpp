@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "edit/analyze.hpp"
 #include "connections/plan.hpp"
+#include "edit/analyze.hpp"
 #include "netns/live_support.hpp"
 #include "test_paths.hpp"
 
@@ -53,7 +53,8 @@ TEST(live_plan, the_trigger_is_bits_4_to_6_of_the_transport_byte) {
   // Connection1 is cyclic (bit 16 of its trigger and transport field); change
   // of state is bit 17, application bit 18. Class 1 is the low nibble: the
   // Forward_Open's transport byte is 0x01, 0x11, 0x21.
-  for (const auto& [field, transport] : {std::pair{"0x84010002,", 0x01}, {"0x84020002,", 0x11}, {"0x84040002,", 0x21}}) {
+  for (const auto& [field, transport] :
+       {std::pair{"0x84010002,", 0x01}, {"0x84020002,", 0x11}, {"0x84040002,", 0x21}}) {
     SCOPED_TRACE(field);
     const auto plans = plans_with("0x84010002,", field);
     ASSERT_FALSE(plans.empty());

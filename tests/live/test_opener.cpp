@@ -70,7 +70,8 @@ TEST_F(live_opener, its_own_eds_passes_with_every_connection_opened) {
     EXPECT_EQ(row.find("open; 0 frames"), std::string::npos) << row;
     EXPECT_TRUE(row.ends_with("match")) << row;
   }
-  for (const auto* a : {"\nAssem100 size (instance 100) ", "\nAssem150 size (instance 150) ", "\nAssem151 size (instance 151) "}) {
+  for (const auto* a :
+       {"\nAssem100 size (instance 100) ", "\nAssem150 size (instance 150) ", "\nAssem151 size (instance 151) "}) {
     const auto at = r.output.find(a);
     ASSERT_NE(at, std::string::npos) << a << r.output;
     const auto row = r.output.substr(at + 1, r.output.find('\n', at + 1) - at - 1);
@@ -161,8 +162,8 @@ const fault faults[] = {
      "extended 0x0127 invalid O->T size (additional 0x0026): the device accepts 38 bytes O->T, the EDS says 39"},
     {"to_size_16", "Connection Manager.Connection1.to_size=16", "Param4,16,Assem100", "Connection1",
      "extended 0x0128 invalid T->O size (additional 0x0022): the device accepts 34 bytes T->O, the EDS says 18"},
-    {"wrong_instance_in_path", "Connection Manager.Connection1.path=\"20 04 24 97 2C 96 2C 65\"",
-     "2C 96 2C 65", "Connection1", "0x012F"},
+    {"wrong_instance_in_path", "Connection Manager.Connection1.path=\"20 04 24 97 2C 96 2C 65\"", "2C 96 2C 65",
+     "Connection1", "0x012F"},
     {"config_size_refused", "Connection Manager.Connection1.target_config_size=12", ",,12", "Connection1",
      "refused the 12 bytes of configuration"},
     {"assembly_size", "Assembly.Assem100.size=16", "16,", "Assem100", "holds 32 bytes on the device, Assem100 says 16"},
@@ -208,9 +209,9 @@ TEST_F(live_opener, an_owned_device_is_busy_not_wrong) {
   ASSERT_TRUE(opened.ok());
   auto& owner = *opened;
   auto fo = opener_connection1_request();
-  fo.originator_vendor = 0x1234;   // not edsc's
+  fo.originator_vendor = 0x1234;  // not edsc's
   fo.originator_serial = 0x600D;
-  fo.timeout_multiplier = 7;       // x512: 15 s at 30 ms
+  fo.timeout_multiplier = 7;  // x512: 15 s at 30 ms
   const auto reply = owner.request_raw(cip::service::forward_open, cip::encode_forward_open(fo).value());
   ASSERT_TRUE(reply.ok());
   ASSERT_EQ(reply->general, 0);
@@ -219,7 +220,8 @@ TEST_F(live_opener, an_owned_device_is_busy_not_wrong) {
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_EQ(r.output.find("[live-connection-refused]"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("0 errors"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find(": error: " + device() + " is busy: Connection1 not checked: the device refused it with "
+  EXPECT_NE(r.output.find(": error: " + device() +
+                          " is busy: Connection1 not checked: the device refused it with "
                           "0x01 connection failure, extended 0x0106 ownership conflict"),
             std::string::npos)
       << r.output;
@@ -274,7 +276,8 @@ TEST_F(live_opener, ctrl_c_closes_the_open_connection_on_the_wire) {
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   net_->stop(dump, SIGINT);
   // Forward_Close (service 0x4E): edsc's request (0) and OpENer's reply (1), status 0.
-  const auto fc = shell("tshark -r " + quoted(pcap) + " -Y 'cip.sc == 0x4e' -T fields -e cip.rr -e cip.genstat 2>/dev/null");
+  const auto fc =
+      shell("tshark -r " + quoted(pcap) + " -Y 'cip.sc == 0x4e' -T fields -e cip.rr -e cip.genstat 2>/dev/null");
   EXPECT_NE(fc.out.find("0\t\n"), std::string::npos) << fc.out;
   EXPECT_NE(fc.out.find("1\t0"), std::string::npos) << fc.out;
 }
@@ -285,7 +288,8 @@ std::string tshark_identity(const nlohmann::json& i) {
   std::snprintf(serial, sizeof serial, "0x%08x", i["serial_number"].get<unsigned>());
   std::snprintf(vendor, sizeof vendor, "0x%04x", i["vendor_id"].get<unsigned>());
   return std::string(vendor) + "," + std::to_string(i["device_type"].get<int>()) + "," +
-         std::to_string(i["product_code"].get<int>()) + "," + serial + "," + i["product_name"].get<std::string>() + "\n";
+         std::to_string(i["product_code"].get<int>()) + "," + serial + "," + i["product_name"].get<std::string>() +
+         "\n";
 }
 
 TEST_F(live_opener, a_captured_session_decodes_in_tshark_with_the_same_identity) {
@@ -308,8 +312,9 @@ TEST_F(live_opener, a_captured_session_decodes_in_tshark_with_the_same_identity)
   EXPECT_EQ(malformed.out, "") << malformed.out;
   const auto j = nlohmann::json::parse(probe.output, nullptr, false);
   ASSERT_FALSE(j.is_discarded());
-  const auto id = shell(base + "-Y enip.lir.name -T fields -E separator=, -e enip.lir.vendor -e enip.lir.devtype "
-                               "-e enip.lir.prodcode -e enip.lir.serial -e enip.lir.name 2>/dev/null");
+  const auto id = shell(base +
+                        "-Y enip.lir.name -T fields -E separator=, -e enip.lir.vendor -e enip.lir.devtype "
+                        "-e enip.lir.prodcode -e enip.lir.serial -e enip.lir.name 2>/dev/null");
   const auto& i = j["identity"];
   EXPECT_EQ(id.out, tshark_identity(i)) << id.out;
   // Frames of Connection1 went both ways on UDP 2222.

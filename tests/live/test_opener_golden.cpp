@@ -30,8 +30,7 @@ class live_opener_golden : public opener_device_test {
       text = std::regex_replace(text, std::regex(pattern), with);
     };
     replace(std::regex_replace(device(), std::regex("\\."), "\\."), "<device>");
-    replace(std::regex_replace(std::string(EDSC_SHARED_DIR), std::regex(R"([.^$|()\[\]{}*+?\\])"), "\\$&"),
-            "<shared>");
+    replace(std::regex_replace(std::string(EDSC_SHARED_DIR), std::regex(R"([.^$|()\[\]{}*+?\\])"), "\\$&"), "<shared>");
     replace(R"([0-9]+(\.[0-9]+)? ?ms\b)", "<n> ms");
     replace(R"([0-9]+(\.[0-9]+)? s\b)", "<n> s");
     replace(R"(\b[0-9]+ frames\b)", "<n> frames");

@@ -80,18 +80,19 @@ TEST(live_session, registers_by_the_bytes_it_is_given_in_any_split) {
 
 TEST(live_session, a_request_goes_out_in_send_rr_data_and_its_reply_comes_back) {
   auto s = registered_session();
-  s.request(cip::service::get_attribute_single, cip::encode_request(cip::service::get_attribute_single,
-                                                                    cip::logical_path(cip::class_id::identity, 1, 7))
-                                                        .value(),
-            t0);
+  s.request(
+      cip::service::get_attribute_single,
+      cip::encode_request(cip::service::get_attribute_single, cip::logical_path(cip::class_id::identity, 1, 7)).value(),
+      t0);
   // SendRRData (0x006F), 24 data bytes, handle 0x1234, context "edsc" 2; interface 0, timeout 1 s,
   // two items: null address, unconnected data of 8 bytes (0x0E, path 20 01 24 01 30 07).
   EXPECT_EQ(hex(*s.poll_transmit()),
             "6F 00 18 00 34 12 00 00 00 00 00 00 65 64 73 63 02 00 00 00 00 00 00 00 "
             "00 00 00 00 01 00 02 00 00 00 00 00 B2 00 08 00 0E 03 20 01 24 01 30 07");
   // Its reply: service 0x8E, status 0, data 03 41 42 43.
-  s.handle_bytes(reply(0x006F, 0x1234, ctx(2), unhex("00 00 00 00 00 00 02 00 00 00 00 00 B2 00 08 00 "
-                                                       "8E 00 00 00 03 41 42 43")),
+  s.handle_bytes(reply(0x006F, 0x1234, ctx(2),
+                       unhex("00 00 00 00 00 00 02 00 00 00 00 00 B2 00 08 00 "
+                             "8E 00 00 00 03 41 42 43")),
                  t0);
   const auto ev = s.poll_event();
   ASSERT_TRUE(ev && std::holds_alternative<cip_reply>(*ev)) << error_words(s);
@@ -111,8 +112,9 @@ TEST(live_session, a_reset_mid_header_gives_the_systems_words) {
   auto s = registering();
   s.handle_bytes(cip::byte_view(registered_reply).first(12), t0);
   s.handle_closed("Connection reset by peer");
-  EXPECT_EQ(error_words(s), "live-closed: receiving RegisterSession reply header failed after 12 of the 24 bytes: "
-                            "Connection reset by peer");
+  EXPECT_EQ(error_words(s),
+            "live-closed: receiving RegisterSession reply header failed after 12 of the 24 bytes: "
+            "Connection reset by peer");
 }
 
 TEST(live_session, a_length_that_lies_ends_at_the_deadline_not_before) {
@@ -123,8 +125,9 @@ TEST(live_session, a_length_that_lies_ends_at_the_deadline_not_before) {
   s.handle_timeout(t0 + timeout - 1ms);
   EXPECT_FALSE(s.poll_event());
   s.handle_timeout(t0 + timeout);
-  EXPECT_EQ(error_words(s), "live-timeout: the device sent 4 of the 100 bytes of RegisterSession reply and then "
-                            "nothing within the timeout");
+  EXPECT_EQ(error_words(s),
+            "live-timeout: the device sent 4 of the 100 bytes of RegisterSession reply and then "
+            "nothing within the timeout");
   EXPECT_FALSE(s.next_deadline());
 }
 
@@ -146,8 +149,9 @@ TEST(live_session, another_session_handle_is_refused) {
   auto s = registered_session();
   s.request(cip::service::get_attribute_single, unhex("0E 02 20 01 24 01"), t0);
   s.handle_bytes(reply(0x006F, 0x9999, ctx(2), {}), t0);
-  EXPECT_EQ(error_words(s), "live-unexpected-reply: the device's SendRRData reply carries session handle 0x00009999, "
-                            "ours is 0x00001234");
+  EXPECT_EQ(error_words(s),
+            "live-unexpected-reply: the device's SendRRData reply carries session handle 0x00009999, "
+            "ours is 0x00001234");
 }
 
 // A request its SendRRData item cannot hold (over 65 535 bytes) is refused
@@ -174,8 +178,9 @@ TEST(live_session, a_reply_to_another_request_is_refused) {
   auto s = registered_session();
   s.request(cip::service::get_attribute_single, unhex("0E 02 20 01 24 01"), t0);
   s.handle_bytes(reply(0x006F, 0x1234, ctx(7), cip::send_rr_data(unhex("8E 00 00 00"), 0).value()), t0);
-  EXPECT_EQ(error_words(s), "live-unexpected-reply: the device's SendRRData reply does not echo our sender context: "
-                            "a reply to another request");
+  EXPECT_EQ(error_words(s),
+            "live-unexpected-reply: the device's SendRRData reply does not echo our sender context: "
+            "a reply to another request");
 }
 
 TEST(live_session, an_encapsulation_status_is_a_refusal_in_words) {
@@ -242,9 +247,9 @@ TEST(live_session, list_identity_and_list_services_take_any_handle) {
   auto s = registered_session();
   s.list_services(t0);
   // ListServices reply: one item 0x0100, 20 bytes: version 1, capability 0x0120, "Communications".
-  s.handle_bytes(reply(0x0004, 0, ctx(2),
-                       unhex("01 00 00 01 14 00 01 00 20 01 43 6F 6D 6D 75 6E 69 63 61 74 69 6F 6E 73 00 00")),
-                 t0);
+  s.handle_bytes(
+      reply(0x0004, 0, ctx(2), unhex("01 00 00 01 14 00 01 00 20 01 43 6F 6D 6D 75 6E 69 63 61 74 69 6F 6E 73 00 00")),
+      t0);
   const auto ev = s.poll_event();
   ASSERT_TRUE(ev && std::holds_alternative<services>(*ev)) << error_words(s);
   ASSERT_EQ(std::get<services>(*ev).items.size(), 1u);

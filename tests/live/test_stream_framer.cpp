@@ -16,8 +16,7 @@ using live_test::unhex;
 const char* const register_request =
     "65 00 04 00 00 00 00 00 00 00 00 00 65 64 73 63 01 00 00 00 00 00 00 00 01 00 00 00";
 // ListIdentity request: command 0x0063, length 0, context "edsc" + 2.
-const char* const list_identity_request =
-    "63 00 00 00 00 00 00 00 00 00 00 00 65 64 73 63 02 00 00 00 00 00 00 00";
+const char* const list_identity_request = "63 00 00 00 00 00 00 00 00 00 00 00 65 64 73 63 02 00 00 00 00 00 00 00";
 
 std::string next_hex(stream_framer& f) {
   auto m = f.next();

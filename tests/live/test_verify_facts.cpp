@@ -128,8 +128,8 @@ TEST(live_verdicts, another_product_name_is_a_warning) {
 TEST(live_verdicts, assembly_sizes_missing_and_unreadable) {
   auto f = matching();
   f.assemblies[0].size = size_reply(0, {16, 0});
-  f.assemblies[1] = {size_reply(0x05, {}), true};    // path destination unknown; the class answers
-  f.assemblies[2] = {size_reply(0x05, {}), false};   // the same, but the class does not answer either
+  f.assemblies[1] = {size_reply(0x05, {}), true};   // path destination unknown; the class answers
+  f.assemblies[2] = {size_reply(0x05, {}), false};  // the same, but the class does not answer either
   const auto r = judge_facts(opener(), f, false);
   EXPECT_EQ(row_of(r, "Assem150 size (instance 150)"), "16 | mismatch");
   EXPECT_EQ(row_of(r, "Assem100 size (instance 100)"), "no such instance | mismatch");

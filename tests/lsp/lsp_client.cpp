@@ -13,8 +13,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "time_scale.hpp"
 #include "test_paths.hpp"
+#include "time_scale.hpp"
 
 extern char** environ;
 
@@ -176,8 +176,7 @@ int lsp_process::wait_exit() {
     }
     // Keep draining output so the server never blocks on a full pipe.
     char chunk[65536];
-    while (read(out_, chunk, sizeof chunk) > 0) {
-    }
+    while (read(out_, chunk, sizeof chunk) > 0) {}
     usleep(10000);
   }
   return -1;

@@ -16,10 +16,9 @@ namespace {
 const std::string defect_path = std::string(EDSC_TESTS_DIR) + "/lsp/data/defect.eds";
 
 json open_file(lsp_process& p, const std::string& path) {
-  p.notify("textDocument/didOpen", json{{"textDocument", json{{"uri", file_uri(path)},
-                                                             {"languageId", "eds"},
-                                                             {"version", 7},
-                                                             {"text", read_bytes(path)}}}});
+  p.notify("textDocument/didOpen",
+           json{{"textDocument",
+                 json{{"uri", file_uri(path)}, {"languageId", "eds"}, {"version", 7}, {"text", read_bytes(path)}}}});
   return p.wait_notification("textDocument/publishDiagnostics")["params"];
 }
 
@@ -42,7 +41,8 @@ TEST(LspDiagnostics, PublishedOnOpenWithRangesCodesAndNotes) {
   // missing ';' at byte column 42: character 41 - 2 = 39.
   const auto* semi = find_code(diags, "syntax-missing-semicolon");
   ASSERT_TRUE(semi);
-  EXPECT_EQ((*semi)["range"], (json{{"start", {{"line", 3}, {"character", 39}}}, {"end", {{"line", 3}, {"character", 39}}}}));
+  EXPECT_EQ((*semi)["range"],
+            (json{{"start", {{"line", 3}, {"character", 39}}}, {"end", {{"line", 3}, {"character", 39}}}}));
   EXPECT_EQ((*semi)["severity"], 1);
   EXPECT_EQ((*semi)["source"], "edsc");
   const std::string href = (*semi)["codeDescription"]["href"];
@@ -56,7 +56,8 @@ TEST(LspDiagnostics, PublishedOnOpenWithRangesCodesAndNotes) {
   // The note becomes relatedInformation in the same document.
   const auto* dup = find_code(diags, "duplicate-entry");
   ASSERT_TRUE(dup);
-  EXPECT_EQ((*dup)["range"], (json{{"start", {{"line", 19}, {"character", 8}}}, {"end", {{"line", 19}, {"character", 16}}}}));
+  EXPECT_EQ((*dup)["range"],
+            (json{{"start", {{"line", 19}, {"character", 8}}}, {"end", {{"line", 19}, {"character", 16}}}}));
   ASSERT_EQ((*dup)["relatedInformation"].size(), 1u);
   EXPECT_EQ((*dup)["relatedInformation"][0]["message"], "first defined here");
   EXPECT_EQ((*dup)["relatedInformation"][0]["location"]["uri"], file_uri(defect_path));
@@ -140,17 +141,18 @@ TEST(LspDiagnostics, RangesCountUtf16UnitsOutsideTheBmp) {
   lsp_process p;
   p.initialize();
   p.notify("textDocument/didOpen",
-           json{{"textDocument", {{"uri", "file:///tmp/astral.eds"}, {"languageId", "eds"}, {"version", 1}, {"text", text}}}});
+           json{{"textDocument",
+                 {{"uri", "file:///tmp/astral.eds"}, {"languageId", "eds"}, {"version", 1}, {"text", text}}}});
   const auto diags = p.wait_notification("textDocument/publishDiagnostics")["params"]["diagnostics"];
   const auto* semi = find_code(diags, "syntax-missing-semicolon");
   ASSERT_TRUE(semi) << diags.dump();
   EXPECT_EQ((*semi)["range"]["start"], (json{{"line", 1}, {"character", 19}})) << semi->dump();
   // The quick fix inserts the ';' at that same UTF-16 position.
-  const auto actions = p.request(
-      "textDocument/codeAction",
-      json{{"textDocument", {{"uri", "file:///tmp/astral.eds"}}},
-           {"range", (*semi)["range"]},
-           {"context", {{"diagnostics", json::array({*semi})}, {"only", json::array({"quickfix"})}}}});
+  const auto actions =
+      p.request("textDocument/codeAction",
+                json{{"textDocument", {{"uri", "file:///tmp/astral.eds"}}},
+                     {"range", (*semi)["range"]},
+                     {"context", {{"diagnostics", json::array({*semi})}, {"only", json::array({"quickfix"})}}}});
   ASSERT_FALSE(actions["result"].empty()) << actions.dump();
   const auto& edit = actions["result"][0]["edit"]["changes"]["file:///tmp/astral.eds"][0];
   EXPECT_EQ(edit["newText"], ";");
@@ -189,10 +191,11 @@ TEST(LspCodeActions, QuickFixAndFixAllMatchEdscFix) {
   lsp_process p;
   p.initialize();
   open_file(p, defect_path);
-  const auto r = p.request("textDocument/codeAction",
-                           json{{"textDocument", {{"uri", file_uri(defect_path)}}},
-                                {"range", {{"start", {{"line", 3}, {"character", 0}}}, {"end", {{"line", 3}, {"character", 50}}}}},
-                                {"context", {{"diagnostics", json::array()}}}});
+  const auto r =
+      p.request("textDocument/codeAction",
+                json{{"textDocument", {{"uri", file_uri(defect_path)}}},
+                     {"range", {{"start", {{"line", 3}, {"character", 0}}}, {"end", {{"line", 3}, {"character", 50}}}}},
+                     {"context", {{"diagnostics", json::array()}}}});
   ASSERT_TRUE(r.contains("result")) << r.dump();
   const auto& actions = r["result"];
   ASSERT_EQ(actions.size(), 2u) << actions.dump(2);
@@ -208,10 +211,11 @@ TEST(LspCodeActions, QuickFixAndFixAllMatchEdscFix) {
             run_edsc_stdout("fix '" + defect_path + "'"));
 
   // A range without a fixable finding: only the file-wide action; `only` filters kinds.
-  const auto none = p.request("textDocument/codeAction",
-                              json{{"textDocument", {{"uri", file_uri(defect_path)}}},
-                                   {"range", {{"start", {{"line", 0}, {"character", 0}}}, {"end", {{"line", 0}, {"character", 1}}}}},
-                                   {"context", {{"diagnostics", json::array()}, {"only", json::array({"quickfix"})}}}});
+  const auto none =
+      p.request("textDocument/codeAction",
+                json{{"textDocument", {{"uri", file_uri(defect_path)}}},
+                     {"range", {{"start", {{"line", 0}, {"character", 0}}}, {"end", {{"line", 0}, {"character", 1}}}}},
+                     {"context", {{"diagnostics", json::array()}, {"only", json::array({"quickfix"})}}}});
   EXPECT_TRUE(none["result"].empty()) << none.dump();
 }
 
@@ -221,15 +225,18 @@ TEST(LspFormatting, IsEdscFmtAndRefusesBrokenSyntax) {
   // Mess the layout up (meaning unchanged): no indentation, extra blanks.
   std::string messy;
   for (char c : text) {
-    if (c == '=') messy += "   =";
-    else messy += c;
+    if (c == '=')
+      messy += "   =";
+    else
+      messy += c;
   }
   lsp_process p;
   p.initialize();
   const std::string uri = "file:///tmp/messy.eds";
-  p.notify("textDocument/didOpen", json{{"textDocument", {{"uri", uri}, {"languageId", "eds"}, {"version", 1}, {"text", messy}}}});
-  const auto r = p.request("textDocument/formatting",
-                           json{{"textDocument", {{"uri", uri}}}, {"options", {{"tabSize", 2}, {"insertSpaces", true}}}});
+  p.notify("textDocument/didOpen",
+           json{{"textDocument", {{"uri", uri}, {"languageId", "eds"}, {"version", 1}, {"text", messy}}}});
+  const auto r = p.request("textDocument/formatting", json{{"textDocument", {{"uri", uri}}},
+                                                           {"options", {{"tabSize", 2}, {"insertSpaces", true}}}});
   ASSERT_TRUE(r.contains("result")) << r.dump();
   EXPECT_EQ(apply_edits(messy, r["result"]), run_edsc_stdout("fmt '" + clean + "'"));
   // And independently of fmt: the project file is kept in fmt's layout (the
@@ -253,8 +260,9 @@ TEST(LspDiagnostics, AByteOrderMarkTheClientKeepsIsOneCharacter) {
   std::vector<json> published;
   for (const auto* uri : {"file:///tmp/plain.eds", "file:///tmp/marked.eds"}) {
     const bool marked = std::string(uri).find("marked") != std::string::npos;
-    p.notify("textDocument/didOpen", json{{"textDocument", {{"uri", uri}, {"languageId", "eds"}, {"version", 1},
-                                                             {"text", marked ? bom + text : text}}}});
+    p.notify("textDocument/didOpen",
+             json{{"textDocument",
+                   {{"uri", uri}, {"languageId", "eds"}, {"version", 1}, {"text", marked ? bom + text : text}}}});
     published.push_back(p.wait_notification("textDocument/publishDiagnostics")["params"]["diagnostics"]);
   }
   EXPECT_EQ(find_code(published[1], "syntax-stray"), nullptr) << published[1].dump();
@@ -272,10 +280,11 @@ TEST(LspDiagnostics, AByteOrderMarkTheClientKeepsIsOneCharacter) {
 
   const std::string clean = std::string(EDSC_PROJECT_DIR) + "/eds/rightsight-42ef-diffuse.eds";
   const std::string messy = bom + "   " + read_bytes(clean);
-  p.notify("textDocument/didOpen",
-           json{{"textDocument", {{"uri", "file:///tmp/m.eds"}, {"languageId", "eds"}, {"version", 1}, {"text", messy}}}});
+  p.notify(
+      "textDocument/didOpen",
+      json{{"textDocument", {{"uri", "file:///tmp/m.eds"}, {"languageId", "eds"}, {"version", 1}, {"text", messy}}}});
   const auto r = p.request("textDocument/formatting", json{{"textDocument", {{"uri", "file:///tmp/m.eds"}}},
-                                                          {"options", {{"tabSize", 2}, {"insertSpaces", true}}}});
+                                                           {"options", {{"tabSize", 2}, {"insertSpaces", true}}}});
   ASSERT_TRUE(r.contains("result")) << r.dump();
   EXPECT_EQ(apply_edits(messy, r["result"]), bom + read_bytes(clean));
 }

@@ -48,11 +48,11 @@ TEST(LspFuzzSeeds, DocumentSessionAsksForEveryFeature) {
   const auto session = lsp_document_session("[Params]\nParam1 = 0,,,0x0000,0xC7,2,\"A\",\"\",\"\",0,1,0,,,,,,,,;\n");
   std::string all;
   for (const auto& m : session) all += m + "\n";
-  for (const char* method : {"initialize", "textDocument/didOpen", "textDocument/hover", "textDocument/definition",
-                             "textDocument/references", "textDocument/completion", "textDocument/prepareRename",
-                             "textDocument/rename", "textDocument/codeAction", "textDocument/documentSymbol",
-                             "textDocument/formatting", "textDocument/didChange", "textDocument/documentHighlight",
-                             "textDocument/foldingRange", "workspace/symbol", "shutdown", "exit"})
+  for (const char* method :
+       {"initialize", "textDocument/didOpen", "textDocument/hover", "textDocument/definition",
+        "textDocument/references", "textDocument/completion", "textDocument/prepareRename", "textDocument/rename",
+        "textDocument/codeAction", "textDocument/documentSymbol", "textDocument/formatting", "textDocument/didChange",
+        "textDocument/documentHighlight", "textDocument/foldingRange", "workspace/symbol", "shutdown", "exit"})
     EXPECT_NE(all.find(std::string("\"method\":\"") + method + "\""), std::string::npos) << method;
 }
 

@@ -30,11 +30,11 @@ std::string message_with(const std::string& raw_string) {
 
 TEST(JsonLongStrings, EscapesAndUtf8DecodeAsTheLibraryDoes) {
   const std::vector<std::string> pieces = {
-      "plain", R"(\")", R"(\\)", R"(\/)", R"(\b\f\n\r\t)", R"(\u0000)", R"(\u00e9)", R"(\u20AC)",
-      R"(\ud83d\ude00)", "\xc3\xa9", "\xe2\x82\xac", "\xf0\x9f\x98\x80", "\x7f",
+      "plain", R"(\")", R"(\\)", R"(\/)", R"(\b\f\n\r\t)", R"(\u0000)", R"(\u00e9)", R"(\u20AC)", R"(\ud83d\ude00)",
+      "\xc3\xa9", "\xe2\x82\xac", "\xf0\x9f\x98\x80", "\x7f",
       // rejected by the library: each must be rejected here too
-      R"(\ud83d)", R"(\ude00)", R"(\ud83dx)", R"(\ud83d\u0041)", R"(\u12)", R"(\uZZZZ)", R"(\x)", "\x01", "\t",
-      "\xc3", "\xc0\x80", "\xed\xa0\x80", "\xf4\x90\x80\x80", "\xe0\x80\x80", "\xff", "\x80", R"(\)"};
+      R"(\ud83d)", R"(\ude00)", R"(\ud83dx)", R"(\ud83d\u0041)", R"(\u12)", R"(\uZZZZ)", R"(\x)", "\x01", "\t", "\xc3",
+      "\xc0\x80", "\xed\xa0\x80", "\xf4\x90\x80\x80", "\xe0\x80\x80", "\xff", "\x80", R"(\)"};
   for (const auto& p : pieces) {
     expect_same(message_with(pad + p));
     expect_same(message_with(p + pad));
@@ -49,7 +49,8 @@ TEST(JsonLongStrings, RandomStringsDecodeAsTheLibraryDoes) {
   for (int n = 0; n < 3000; ++n) {
     std::string s = pad;
     const int len = static_cast<int>(rng() % 24);
-    for (int i = 0; i < len; ++i) s.insert(s.begin() + static_cast<long>(rng() % s.size()), alphabet[rng() % alphabet.size()]);
+    for (int i = 0; i < len; ++i)
+      s.insert(s.begin() + static_cast<long>(rng() % s.size()), alphabet[rng() % alphabet.size()]);
     expect_same(message_with(s));
   }
 }
@@ -57,14 +58,14 @@ TEST(JsonLongStrings, RandomStringsDecodeAsTheLibraryDoes) {
 TEST(JsonLongStrings, StructureAroundTheStringsIsTheLibrarysToJudge) {
   const std::string s = "\"" + pad + "\"";
   expect_same("{\"a\":" + s + ",\"b\":[" + s + "," + s + "]}");
-  expect_same("{" + s + ":1}");                       // a long key
-  expect_same("{\"a\":" + s + ",\"a\":" + s + "}");    // a duplicate key
-  expect_same("{\"a\":" + s + ",}");                   // invalid after the string
-  expect_same("{\"a\" " + s + "}");                    // invalid before it
-  expect_same("{\"a\":" + s);                          // unterminated object
-  expect_same("{\"a\":\"" + pad);                      // unterminated string
-  expect_same("[" + s + "] x");                        // trailing garbage
-  expect_same(s);                                      // a bare string
+  expect_same("{" + s + ":1}");                      // a long key
+  expect_same("{\"a\":" + s + ",\"a\":" + s + "}");  // a duplicate key
+  expect_same("{\"a\":" + s + ",}");                 // invalid after the string
+  expect_same("{\"a\" " + s + "}");                  // invalid before it
+  expect_same("{\"a\":" + s);                        // unterminated object
+  expect_same("{\"a\":\"" + pad);                    // unterminated string
+  expect_same("[" + s + "] x");                      // trailing garbage
+  expect_same(s);                                    // a bare string
   // Deep nesting: a thousand levels show the structure is the library's; the
   // comparison of two such values recurses, which the sanitizer build's larger
   // frames would not survive at a hundred thousand.

@@ -17,16 +17,16 @@ json at(int line, int character) { return json{{"line", line}, {"character", cha
 json range(int l0, int c0, int l1, int c1) { return json{{"start", at(l0, c0)}, {"end", at(l1, c1)}}; }
 
 const std::string motor =
-    "[Params]\r\n"                                                                     // 0
-    "        Param1 = 0, , , 0x0000, 0xC7, 2, \"Motor speed\", \"rpm\", \"\",\r\n"    // 1
-    "                0, 3000, 0;\r\n"                                                  // 2
-    "        Param2 = 0, , , 0x0000, 0xC6, 1, \"Mode\", \"\", \"\", 0, 2, 0;\r\n"      // 3
-    "$ one\r\n"                                                                        // 4
-    "$ two\r\n"                                                                        // 5
-    "$ three\r\n"                                                                      // 6
-    "\r\n"                                                                             // 7
-    "[Assembly]\r\n"                                                                   // 8
-    "        Assem1 = \"In\", \"\", 4, 0x0000, , , 16, Param1, 8, Param2;";            // 9, no final newline
+    "[Params]\r\n"                                                                  // 0
+    "        Param1 = 0, , , 0x0000, 0xC7, 2, \"Motor speed\", \"rpm\", \"\",\r\n"  // 1
+    "                0, 3000, 0;\r\n"                                               // 2
+    "        Param2 = 0, , , 0x0000, 0xC6, 1, \"Mode\", \"\", \"\", 0, 2, 0;\r\n"   // 3
+    "$ one\r\n"                                                                     // 4
+    "$ two\r\n"                                                                     // 5
+    "$ three\r\n"                                                                   // 6
+    "\r\n"                                                                          // 7
+    "[Assembly]\r\n"                                                                // 8
+    "        Assem1 = \"In\", \"\", 4, 0x0000, , , 16, Param1, 8, Param2;";         // 9, no final newline
 
 TEST(LspOutlineProtocol, AnnouncedAndAnswered) {
   lsp_process p;
@@ -67,7 +67,8 @@ TEST(LspOutlineProtocol, AnnouncedAndAnswered) {
   r = p.request("workspace/symbol", json{{"query", "param"}});
   ASSERT_TRUE(r.contains("result")) << r.dump();
   std::vector<std::string> names;
-  for (const auto& s : r["result"]) names.push_back(s["name"].get<std::string>() + "@" + s["location"]["uri"].get<std::string>());
+  for (const auto& s : r["result"])
+    names.push_back(s["name"].get<std::string>() + "@" + s["location"]["uri"].get<std::string>());
   EXPECT_EQ(names, (std::vector<std::string>{"[Params]@file:///tmp/motor.eds", "Param1@file:///tmp/motor.eds",
                                              "Param2@file:///tmp/motor.eds", "[Params]@file:///tmp/other.eds",
                                              "Param7@file:///tmp/other.eds"}));

@@ -38,7 +38,7 @@ TEST(LspPositions, CharactersOutsideTheBmp) {
   const line_index lines(text);
   // Byte offset -> (line, UTF-16 unit), worked out per character.
   const std::pair<std::uint32_t, position> at[] = {
-      {0, {0, 0}}, {4, {0, 2}}, {8, {0, 4}}, {9, {0, 5}},     // after 😀, after 𠀀, after x
+      {0, {0, 0}},  {4, {0, 2}},  {8, {0, 4}},  {9, {0, 5}},   // after 😀, after 𠀀, after x
       {11, {1, 0}}, {13, {1, 1}}, {17, {1, 3}}, {18, {1, 4}},  // after CRLF, é, 😀, y
   };
   for (const auto& [offset, pos] : at) {
@@ -65,20 +65,28 @@ TEST(LspPositions, CharactersOutsideTheBmp) {
 // Lead bytes at the edges of each UTF-8 length, and sequences that are not
 // UTF-8: each byte that starts no whole character is one unit on its own.
 TEST(LspPositions, Utf8LeadBytesAtTheirLimits) {
-  EXPECT_EQ(utf16_length("\xC2\xA0"), 1u);              // U+00A0: the lowest 2-byte lead
-  EXPECT_EQ(utf16_length("\xDF\xBF"), 1u);              // U+07FF: the highest
-  EXPECT_EQ(utf16_length("\xC1\xBF"), 2u);              // C1 leads nothing (overlong)
-  EXPECT_EQ(utf16_length("\xE0\xA0\x80"), 1u);          // U+0800: the lowest 3-byte lead
-  EXPECT_EQ(utf16_length("\xEF\xBF\xBD"), 1u);          // U+FFFD: the highest
-  EXPECT_EQ(utf16_length("\xF0\x90\x80\x80"), 2u);      // U+10000: the lowest 4-byte lead
-  EXPECT_EQ(utf16_length("\xF4\x8F\xBF\xBF"), 2u);      // U+10FFFF: the highest
-  EXPECT_EQ(utf16_length("\xF5\x80\x80\x80"), 4u);      // F5 leads nothing
-  EXPECT_EQ(utf16_length("\xE2\x82"), 2u);              // cut short by the end
-  EXPECT_EQ(utf16_length("\xC3" "A"), 2u);              // a lead, then no continuation
-  EXPECT_EQ(utf16_length("\xE2\x82" "A"), 3u);
-  EXPECT_EQ(utf16_length("\xF0\x9F\x98" "A"), 4u);
+  EXPECT_EQ(utf16_length("\xC2\xA0"), 1u);          // U+00A0: the lowest 2-byte lead
+  EXPECT_EQ(utf16_length("\xDF\xBF"), 1u);          // U+07FF: the highest
+  EXPECT_EQ(utf16_length("\xC1\xBF"), 2u);          // C1 leads nothing (overlong)
+  EXPECT_EQ(utf16_length("\xE0\xA0\x80"), 1u);      // U+0800: the lowest 3-byte lead
+  EXPECT_EQ(utf16_length("\xEF\xBF\xBD"), 1u);      // U+FFFD: the highest
+  EXPECT_EQ(utf16_length("\xF0\x90\x80\x80"), 2u);  // U+10000: the lowest 4-byte lead
+  EXPECT_EQ(utf16_length("\xF4\x8F\xBF\xBF"), 2u);  // U+10FFFF: the highest
+  EXPECT_EQ(utf16_length("\xF5\x80\x80\x80"), 4u);  // F5 leads nothing
+  EXPECT_EQ(utf16_length("\xE2\x82"), 2u);          // cut short by the end
+  EXPECT_EQ(utf16_length("\xC3"
+                         "A"),
+            2u);  // a lead, then no continuation
+  EXPECT_EQ(utf16_length("\xE2\x82"
+                         "A"),
+            3u);
+  EXPECT_EQ(utf16_length("\xF0\x9F\x98"
+                         "A"),
+            4u);
   // The same through positions: U+FFFD then a broken pair then x.
-  const std::string text = "\xEF\xBF\xBD\xC3" "Ax";
+  const std::string text =
+      "\xEF\xBF\xBD\xC3"
+      "Ax";
   const line_index lines(text);
   EXPECT_EQ(lines.to_position(3), (position{0, 1}));
   EXPECT_EQ(lines.to_position(4), (position{0, 2}));
@@ -98,7 +106,9 @@ TEST(LspPositions, LineCountIsTheEnd) {
 }
 
 TEST(LspPositions, AppliesIncrementalChanges) {
-  std::string text = "ab\xF0\x9F\x98\x80" "cd\nef\n";
+  std::string text =
+      "ab\xF0\x9F\x98\x80"
+      "cd\nef\n";
   apply_change(text, {range{{0, 2}, {0, 4}}, "X"});  // replace the emoji
   EXPECT_EQ(text, "abXcd\nef\n");
   apply_change(text, {range{{1, 0}, {1, 0}}, "new\n"});

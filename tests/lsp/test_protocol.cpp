@@ -108,7 +108,8 @@ TEST(LspProtocol, MalformedMessagesAreAnsweredAndSurvived) {
   p.send_raw("Content-Type: text/plain\r\n\r\n");
   // Wrong params: InvalidParams, not a crash.
   EXPECT_EQ(p.request("textDocument/formatting", json{{"textDocument", 3}})["error"]["code"], -32602);
-  EXPECT_EQ(p.request("textDocument/codeAction", json{{"textDocument", json{{"uri", "file:///nowhere.eds"}}}})["error"]["code"],
+  EXPECT_EQ(p.request("textDocument/codeAction",
+                      json{{"textDocument", json{{"uri", "file:///nowhere.eds"}}}})["error"]["code"],
             -32602);
   EXPECT_EQ(p.request("shutdown", nullptr)["result"], nullptr);
   // After shutdown, requests are refused.
@@ -150,12 +151,13 @@ TEST(LspProtocol, IncrementalChangesInUtf16Positions) {
   }
   EXPECT_TRUE(missing_semicolon) << d.dump();
   // Full sync replaces everything; the formatter then sees the new text.
-  p.notify("textDocument/didChange", json{{"textDocument", json{{"uri", uri}, {"version", 3}}},
-                                          {"contentChanges", json::array({json{{"text", "[File]\nDescText = \"a\";\n"}}})}});
+  p.notify("textDocument/didChange",
+           json{{"textDocument", json{{"uri", uri}, {"version", 3}}},
+                {"contentChanges", json::array({json{{"text", "[File]\nDescText = \"a\";\n"}}})}});
   d = p.wait_notification("textDocument/publishDiagnostics");
   EXPECT_EQ(d["params"]["version"], 3);
-  const auto f = p.request("textDocument/formatting",
-                           json{{"textDocument", json{{"uri", uri}}}, {"options", json{{"tabSize", 4}, {"insertSpaces", true}}}});
+  const auto f = p.request("textDocument/formatting", json{{"textDocument", json{{"uri", uri}}},
+                                                           {"options", json{{"tabSize", 4}, {"insertSpaces", true}}}});
   ASSERT_TRUE(f.contains("result")) << f.dump();
   EXPECT_EQ(apply_edits("[File]\nDescText = \"a\";\n", f["result"]), "[File]\n        DescText = \"a\";\n");
   // Closing clears the editor's list.

@@ -56,12 +56,15 @@ TEST(LspOutlineCorpus, HighlightsFoldsAndSymbolsOfEveryFile) {
     const std::string uri = "file:///corpus.eds";
     const json doc{{"uri", uri}};
     ask("initialize", json{{"capabilities", json::object()}});
-    srv.handle(json{{"jsonrpc", "2.0"}, {"method", "textDocument/didOpen"},
-                    {"params", {{"textDocument", {{"uri", uri}, {"languageId", "eds"}, {"version", 1}, {"text", text}}}}}}
-                   .dump(-1, ' ', false, json::error_handler_t::replace));
+    srv.handle(
+        json{{"jsonrpc", "2.0"},
+             {"method", "textDocument/didOpen"},
+             {"params", {{"textDocument", {{"uri", uri}, {"languageId", "eds"}, {"version", 1}, {"text", text}}}}}}
+            .dump(-1, ' ', false, json::error_handler_t::replace));
     // The server's positions are in the text it holds (invalid UTF-8
     // replaced by the JSON dump, as a client would send it).
-    auto a = analyze_text(json::parse(json(text).dump(-1, ' ', false, json::error_handler_t::replace)).get<std::string>());
+    auto a =
+        analyze_text(json::parse(json(text).dump(-1, ' ', false, json::error_handler_t::replace)).get<std::string>());
     const lsp::line_index lines(a->text());
 
     const auto folded = ask("textDocument/foldingRange", json{{"textDocument", doc}});

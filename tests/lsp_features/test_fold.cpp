@@ -58,8 +58,7 @@ TEST(LspFold, SyntaxErrors) {
   // An entry before any section, a missing `;` (the parser ends Y at `2`
   // and reads Z as the next entry), an unclosed dataset: each entry folds
   // from its keyword to its last value.
-  EXPECT_EQ(folds("X = 1,\n 2;\n[A]\nY = 1,\n 2\nZ = 3;\n[B]\nW = {1,\n 2;\n"),
-            (V{"0-1", "2-5", "3-4", "6-8", "7-8"}));
+  EXPECT_EQ(folds("X = 1,\n 2;\n[A]\nY = 1,\n 2\nZ = 3;\n[B]\nW = {1,\n 2;\n"), (V{"0-1", "2-5", "3-4", "6-8", "7-8"}));
   EXPECT_EQ(folds(""), V{});
   EXPECT_EQ(folds("\n\n\n"), V{});
   EXPECT_EQ(folds("[A"), V{});

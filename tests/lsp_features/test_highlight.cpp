@@ -52,7 +52,8 @@ TEST(LspHighlight, UndefinedTargetIsReadOnly) {
 }
 
 TEST(LspHighlight, DuplicateDefinitionIsASecondWrite) {
-  auto a = analyze_text("[Params]\n Param1 = 0;\n Param1 = 1;\n[Assembly]\n Assem1 = \"a\", \"\", 2, 0, , , 16, Param1;\n");
+  auto a =
+      analyze_text("[Params]\n Param1 = 0;\n Param1 = 1;\n[Assembly]\n Assem1 = \"a\", \"\", 2, 0, , , 16, Param1;\n");
   EXPECT_EQ(marks(*a, lsp::highlights(*a, offset_of(*a, "Param1;"))), (V{"2:Param1 W", "3:Param1 W", "5:Param1 R"}));
 }
 

@@ -70,15 +70,17 @@ TEST_F(LspHover, EpathSegments) {
   EXPECT_HAS(link, "- class 4 (0x4)\n- instance 1 (0x1)\n- attribute [Param2] \"Mode\"\n");
   const auto conn = hover_at(*a, offset_of(*a, "\"20 04 24 01 2C 96 2C 64\"", 1)).md;
   EXPECT_HAS(conn, "field 15 `path` — EPATH");
-  EXPECT_HAS(conn, "- class 4 (0x4)\n- instance 1 (0x1)\n- connection point 150 (0x96)\n- connection point 100 (0x64)\n");
+  EXPECT_HAS(conn,
+             "- class 4 (0x4)\n- instance 1 (0x1)\n- connection point 150 (0x96)\n- connection point 100 (0x64)\n");
   EXPECT_HAS(conn, "8 bytes");
 }
 
 TEST_F(LspHover, TriggerAndTransport) {
   const auto h = hover_at(*a, offset_of(*a, "0x04010002", 3));
   EXPECT_EQ(h.range, "0x04010002");
-  EXPECT_HAS(h.md, "- transport class 1 (bits 0-15)\n- trigger: cyclic (bits 16-18)\n"
-                   "- application type: exclusive owner (bits 24-27)\n- direction: client (bit 31)\n");
+  EXPECT_HAS(h.md,
+             "- transport class 1 (bits 0-15)\n- trigger: cyclic (bits 16-18)\n"
+             "- application type: exclusive owner (bits 24-27)\n- direction: client (bit 31)\n");
 }
 
 TEST_F(LspHover, ConnectionParameters) {
@@ -115,8 +117,9 @@ TEST_F(LspHover, ReferencesShowTheirTarget) {
 }
 
 TEST_F(LspHover, UndefinedAndUnknown) {
-  auto b = analyze_text(std::string(sample) + "        Connection2 = 0x04010002, 0x44640405, Param9;\n"
-                                              "        1_Vendor = 1;\n[Mystery]\n        Foo = 1;\n");
+  auto b = analyze_text(std::string(sample) +
+                        "        Connection2 = 0x04010002, 0x44640405, Param9;\n"
+                        "        1_Vendor = 1;\n[Mystery]\n        Foo = 1;\n");
   EXPECT_HAS(hover_at(*b, offset_of(*b, "Param9")).md, "**Param9** — not defined in this file");
   EXPECT_HAS(hover_at(*b, offset_of(*b, "1_Vendor")).md, "vendor-specific keyword (vendor 1)");
   EXPECT_HAS(hover_at(*b, offset_of(*b, "Mystery")).md, "a section edsc does not know");

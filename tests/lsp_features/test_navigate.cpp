@@ -45,8 +45,7 @@ TEST(LspDefinition, UndefinedTargetHasNoDefinition) {
 TEST(LspReferences, EveryPlaceNamingParam2) {
   auto a = analyze_text(std::string(sample));
   const auto at = offset_of(*a, "Param2 =");
-  EXPECT_EQ(lines(*a, lsp::references(*a, at, true)),
-            (V{"28:Param2", "30:Param2", "31:Enum2", "35:2", "38:Param2"}));
+  EXPECT_EQ(lines(*a, lsp::references(*a, at, true)), (V{"28:Param2", "30:Param2", "31:Enum2", "35:2", "38:Param2"}));
   EXPECT_EQ(lines(*a, lsp::references(*a, at, false)), (V{"28:Param2", "31:Enum2", "35:2", "38:Param2"}));
 }
 

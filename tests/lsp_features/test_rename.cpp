@@ -25,12 +25,12 @@ std::string replaced(std::string text, std::initializer_list<std::pair<std::stri
 TEST(LspRename, ParamRenumbersEveryReference) {
   auto a = analyze_text(std::string(sample));
   const auto expected = replaced(std::string(sample), {
-      {"[Param2]", "[Param7]"},
-      {"Param2 = 0, ,", "Param7 = 0, ,"},
-      {"Enum2 =", "Enum7 ="},
-      {"\"Motor\", 2, 1, 2;", "\"Motor\", 2, 1, 7;"},
-      {"16, Param2;", "16, Param7;"},
-  });
+                                                          {"[Param2]", "[Param7]"},
+                                                          {"Param2 = 0, ,", "Param7 = 0, ,"},
+                                                          {"Enum2 =", "Enum7 ="},
+                                                          {"\"Motor\", 2, 1, 2;", "\"Motor\", 2, 1, 7;"},
+                                                          {"16, Param2;", "16, Param7;"},
+                                                      });
   EXPECT_EQ(renamed(*a, offset_of(*a, "Param2 ="), "Param7"), expected);
   // From a reference, and with just the number: the same edits.
   EXPECT_EQ(renamed(*a, offset_of(*a, "16, Param2", 6), "7"), expected);

@@ -55,13 +55,14 @@ TEST(LspRobust, EveryOffsetOfTheSample) {
 }
 
 TEST(LspRobust, HalfTypedAndMalformedText) {
-  for (const char* text : {
-           "", "[", "[Params", "[Params]\n Param", "[Params]\n Param1 =", "[Params]\n Param1 = 0, 6, \"20 04 [Param",
-           "[Params]\n Param1 = 0,,, 0x0000, 0xC7, 2, \"x\", \"\", \"\", 0, 1, 0 ;\n Enum1 = 0, \"a\", 1",
-           "[Assembly]\n Assem1 = \"x\", \"\", 2, , , , 16, Param1:3, 8, Param99999999999;\n",
-           "[Connection Manager]\n Connection1 = 0x, 0xZZ, Param, , Assem, {1,2}, \"[Param1]\";",
-           "Param1 = 1;\n[Groups]\n Group1 = \"g\", 3, 0, 0x10, -1;\n[IO_Info]\n PollInfo = 1, 99, 0;\n",
-           "\xEF\xBB\xBF[File]\r\n DescText = \"\xB0\xFF\";\r\n$ comment\r\n[Params]\r\n Param1 = 0,,,0,0xC7,2,\"\xB0""C\";"}) {
+  for (const char* text :
+       {"", "[", "[Params", "[Params]\n Param", "[Params]\n Param1 =", "[Params]\n Param1 = 0, 6, \"20 04 [Param",
+        "[Params]\n Param1 = 0,,, 0x0000, 0xC7, 2, \"x\", \"\", \"\", 0, 1, 0 ;\n Enum1 = 0, \"a\", 1",
+        "[Assembly]\n Assem1 = \"x\", \"\", 2, , , , 16, Param1:3, 8, Param99999999999;\n",
+        "[Connection Manager]\n Connection1 = 0x, 0xZZ, Param, , Assem, {1,2}, \"[Param1]\";",
+        "Param1 = 1;\n[Groups]\n Group1 = \"g\", 3, 0, 0x10, -1;\n[IO_Info]\n PollInfo = 1, 99, 0;\n",
+        "\xEF\xBB\xBF[File]\r\n DescText = \"\xB0\xFF\";\r\n$ comment\r\n[Params]\r\n Param1 = 0,,,0,0xC7,2,\"\xB0"
+        "C\";"}) {
     SCOPED_TRACE(text);
     ask_everywhere(*analyze_text(text), 1);
   }
@@ -77,12 +78,21 @@ TEST(LspRobust, EveryOffsetOfProjectFiles) {
 }
 
 TEST(LspRobust, WindowsTextBecomesUtf8) {
-  auto a = analyze_text("[Params]\n Param1 = 0,,,0,0xC7,2,\"Temp \xB0""C\", \"\xB0""C\", \"\", 0, 100, 20;\n"
-                        "[Connection Manager]\n Connection1 = 0x04010002, 0x44640405, Param1;\n");
+  auto a = analyze_text(
+      "[Params]\n Param1 = 0,,,0,0xC7,2,\"Temp \xB0"
+      "C\", \"\xB0"
+      "C\", \"\", 0, 100, 20;\n"
+      "[Connection Manager]\n Connection1 = 0x04010002, 0x44640405, Param1;\n");
   const auto h = lsp::hover(*a, offset_of(*a, "Param1;"));
   ASSERT_TRUE(h);
-  EXPECT_NE(h->markdown.find("\"Temp \xC2\xB0""C\" UINT, 0..100, default 20 \xC2\xB0""C"), std::string::npos) << h->markdown;
-  EXPECT_EQ(lsp::document_symbols(*a)[0].children[0].detail, "Temp \xC2\xB0""C");
+  EXPECT_NE(h->markdown.find("\"Temp \xC2\xB0"
+                             "C\" UINT, 0..100, default 20 \xC2\xB0"
+                             "C"),
+            std::string::npos)
+      << h->markdown;
+  EXPECT_EQ(lsp::document_symbols(*a)[0].children[0].detail,
+            "Temp \xC2\xB0"
+            "C");
 }
 
 }  // namespace

@@ -81,7 +81,8 @@ TEST_F(LspVariantIo, RenameRenumbersOneSection) {
   EXPECT_EQ(apply(a->text(), r.edits), edited({{"0x0001, 1, 1", "0x0001, 5, 1"}, {"Input1 = 3,", "Input5 = 3,"}}));
   r = lsp::rename(*a, variant_strobe_input(), "3");
   EXPECT_EQ(r.error, "");
-  EXPECT_EQ(apply(a->text(), r.edits), edited({{"Input1 = 1, 6,", "Input3 = 1, 6,"}, {"0x0002, 1, 0", "0x0002, 3, 0"}}));
+  EXPECT_EQ(apply(a->text(), r.edits),
+            edited({{"Input1 = 1, 6,", "Input3 = 1, 6,"}, {"0x0002, 1, 0", "0x0002, 3, 0"}}));
 }
 
 TEST_F(LspVariantIo, RenameChecksOnlyItsOwnSectionForATakenNumber) {

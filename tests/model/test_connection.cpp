@@ -69,8 +69,8 @@ TEST(Connection, ReferencesAndPathPlaceholdersResolved) {
   EXPECT_EQ(c.ot_rpi.kind, value_kind::reference);
   EXPECT_EQ(c.ot_rpi.ref.target, 0u);
   EXPECT_EQ(c.ot_size.as_uint(), 4u);
-  EXPECT_EQ(c.ot_format.ref.target, 1u);  // Assem150
-  EXPECT_EQ(c.to_format.ref.target, 0u);  // Assem100
+  EXPECT_EQ(c.ot_format.ref.target, 1u);                // Assem150
+  EXPECT_EQ(c.to_format.ref.target, 0u);                // Assem100
   EXPECT_FALSE(c.target_config_format.ref.resolved());  // Assem7 missing
   const auto* p = d.path_of(c.path);
   ASSERT_NE(p, nullptr);

@@ -10,8 +10,8 @@
 #include <sstream>
 
 #include "corpus_dirs.hpp"
-#include "golden.hpp"
 #include "emit/emit_json.hpp"
+#include "golden.hpp"
 #include "model_support.hpp"
 #include "test_paths.hpp"
 
@@ -27,9 +27,7 @@ std::string slurp(const fs::path& p) {
   return ss.str();
 }
 
-std::vector<fs::path> corpus_files() {
-  return edsc::corpora::sample();
-}
+std::vector<fs::path> corpus_files() { return edsc::corpora::sample(); }
 
 std::string lower_ascii(std::string s) {
   for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -78,7 +76,8 @@ std::map<std::string, int> scan_counts(const std::string& t) {
   return n;
 }
 
-int sum(const std::map<std::string, int>& n, const std::string& section_prefix, std::initializer_list<const char*> stems) {
+int sum(const std::map<std::string, int>& n, const std::string& section_prefix,
+        std::initializer_list<const char*> stems) {
   int total = 0;
   for (const auto& [key, count] : n) {
     const auto bar = key.find('|');
@@ -121,8 +120,10 @@ TEST(CorpusModel, EveryFileLowersAndCountsAgree) {
     EXPECT_EQ(static_cast<int>(dev.enum_pars.size()), sum(counts, "enumpar", {"param"}));
     EXPECT_EQ(static_cast<int>(dev.groups.size()), sum(counts, "groups", {"group"}));
     EXPECT_EQ(static_cast<int>(dev.assemblies.size()),
-              sum(counts, "assembly", {"assem", "assemexa", "proxyassem", "proxiedassem", "proxyassemexa", "proxiedassemexa"}));
-    EXPECT_EQ(static_cast<int>(dev.variants.size()), sum(counts, "assembly", {"variant", "variantexa", "bitstringvariant"}));
+              sum(counts, "assembly",
+                  {"assem", "assemexa", "proxyassem", "proxiedassem", "proxyassemexa", "proxiedassemexa"}));
+    EXPECT_EQ(static_cast<int>(dev.variants.size()),
+              sum(counts, "assembly", {"variant", "variantexa", "bitstringvariant"}));
     EXPECT_EQ(static_cast<int>(dev.connections.size()), sum(counts, "connection manager", {"connection"}));
     EXPECT_EQ(static_cast<int>(dev.io.inputs.size()), sum(counts, "io_info", {"input"}));
     EXPECT_EQ(static_cast<int>(dev.io.outputs.size()), sum(counts, "io_info", {"output"}));
@@ -164,11 +165,12 @@ TEST_P(GoldenDump, MatchesCheckedInJson) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Corpus, GoldenDump,
-    testing::Values("EIPStackGroup__OpENer__opener_sample_app.eds",
-                    "sbb777__a_2025_pc_w_dnet__HILSCHER_NETX90_DN_DNS.eds",
-                    "sbb777__a_2025_pc_w_dnet__476297.eds",
-                    "ME-Catalyst__iodd-manager__54611_MVK_Pro_ME_DIO8_IOL8_5P_AB.eds",
-                    "SerafinTech__node-st-eds-parse__00010003028B0100.eds"),
-    [](const testing::TestParamInfo<const char*>& info) { return "file" + std::to_string(info.index); });
+INSTANTIATE_TEST_SUITE_P(Corpus, GoldenDump,
+                         testing::Values("EIPStackGroup__OpENer__opener_sample_app.eds",
+                                         "sbb777__a_2025_pc_w_dnet__HILSCHER_NETX90_DN_DNS.eds",
+                                         "sbb777__a_2025_pc_w_dnet__476297.eds",
+                                         "ME-Catalyst__iodd-manager__54611_MVK_Pro_ME_DIO8_IOL8_5P_AB.eds",
+                                         "SerafinTech__node-st-eds-parse__00010003028B0100.eds"),
+                         [](const testing::TestParamInfo<const char*>& info) {
+                           return "file" + std::to_string(info.index);
+                         });

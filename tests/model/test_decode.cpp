@@ -145,7 +145,7 @@ TEST(Decode, StringsAndBase64) {
   EXPECT_FALSE(wide);
   EXPECT_EQ(decode::piece_body("L\"abc\"", wide), "abc");
   EXPECT_TRUE(wide);
-  EXPECT_EQ(decode::piece_body("\"abc", wide), "abc");  // unterminated
+  EXPECT_EQ(decode::piece_body("\"abc", wide), "abc");      // unterminated
   EXPECT_EQ(decode::piece_body("\"a\\\"", wide), "a\\\"");  // escaped quote is not the end
   std::string s;
   decode::unescape_append("a\\n\\t\\\"\\\\\\x41\\u00e9", s);
@@ -209,6 +209,6 @@ TEST(Decode, EpathPlaceholderWords) {
   epath r;
   EXPECT_FALSE(decode::epath("SYMBOL", r, store));
   EXPECT_FALSE(decode::epath("20 slot 24", r, store));  // lower case is no placeholder
-  ASSERT_TRUE(decode::epath("AB CD", r, store));          // hex bytes, not words
+  ASSERT_TRUE(decode::epath("AB CD", r, store));        // hex bytes, not words
   EXPECT_EQ(r.byte_count, 2u);
 }

@@ -40,7 +40,7 @@ TEST(Identity, TypedValuesAndInvalidMarkers) {
   ASSERT_TRUE(f.create_date.invalid());
   EXPECT_EQ(f.create_date.why, invalid_reason::bad_date);
   EXPECT_EQ(l->dev.raw(f.create_date), "13-45-2020");
-  EXPECT_EQ(test::at(*l, f.create_date), "13-45-2020");  // origin points at the field
+  EXPECT_EQ(test::at(*l, f.create_date), "13-45-2020");                               // origin points at the field
   EXPECT_EQ(f.create_date.from.entry, l->parsed.tree.sections[0].entries_begin + 1);  // CreateDate
 
   ASSERT_TRUE(f.create_time.ok());

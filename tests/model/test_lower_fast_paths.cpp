@@ -87,8 +87,8 @@ TEST(LowerFastPaths, IntegerOrReferenceTriesEveryReading) {
   EXPECT_EQ(a.members[0].size.magnitude, 16u);
   EXPECT_EQ(a.members[0].ref.kind, value_kind::reference);
   EXPECT_EQ(a.members[0].ref.ref.bit, 3u);
-  EXPECT_EQ(a.members[1].ref.kind, value_kind::integer);  // a member written as a number
-  EXPECT_EQ(a.members[2].size.kind, value_kind::keyword);    // vendor words where numbers go
+  EXPECT_EQ(a.members[1].ref.kind, value_kind::integer);   // a member written as a number
+  EXPECT_EQ(a.members[2].size.kind, value_kind::keyword);  // vendor words where numbers go
   EXPECT_EQ(a.members[2].ref.kind, value_kind::keyword);
   EXPECT_EQ(a.members[3].ref.why, invalid_reason::bad_reference);
   EXPECT_EQ(d.assemblies[1].size.why, invalid_reason::out_of_range);  // 65536 is not a UINT

@@ -34,11 +34,15 @@ inline cip::bytes unhex(const std::string& s) {
   int nibble = -1;
   for (const char c : s) {
     int v = -1;
-    if (c >= '0' && c <= '9') v = c - '0';
-    else if (c >= 'A' && c <= 'F') v = c - 'A' + 10;
-    else if (c >= 'a' && c <= 'f') v = c - 'a' + 10;
+    if (c >= '0' && c <= '9')
+      v = c - '0';
+    else if (c >= 'A' && c <= 'F')
+      v = c - 'A' + 10;
+    else if (c >= 'a' && c <= 'f')
+      v = c - 'a' + 10;
     if (v < 0) continue;
-    if (nibble < 0) nibble = v;
+    if (nibble < 0)
+      nibble = v;
     else {
       out.push_back(static_cast<std::uint8_t>(nibble << 4 | v));
       nibble = -1;

@@ -53,8 +53,8 @@ class private_loopback {
 
  private:
   bool fail(std::string& why, const char* what) {
-    why = std::string("no network namespace of its own for this loopback test: ") + what + " failed: " +
-          std::strerror(errno);
+    why = std::string("no network namespace of its own for this loopback test: ") + what +
+          " failed: " + std::strerror(errno);
     if (home_ >= 0) ::close(home_);
     home_ = -1;
     return false;

@@ -14,31 +14,34 @@ namespace edsc::raw {
 // redundant owner. 32-bit form (Large_Forward_Open): bits 0-15 size, 25
 // variable, 26-27 priority, 29-30 type, 31 redundant owner.
 enum : unsigned { null_type = 0, multicast = 1, point_to_point = 2 };
-inline std::uint32_t params16(unsigned size, unsigned type = point_to_point, bool variable = false, unsigned priority = 0) {
+inline std::uint32_t params16(unsigned size, unsigned type = point_to_point, bool variable = false,
+                              unsigned priority = 0) {
   return (size & 0x1FF) | (variable ? 1u << 9 : 0u) | (priority & 3) << 10 | (type & 3) << 13;
 }
-inline std::uint32_t params32(unsigned size, unsigned type = point_to_point, bool variable = false, unsigned priority = 0) {
+inline std::uint32_t params32(unsigned size, unsigned type = point_to_point, bool variable = false,
+                              unsigned priority = 0) {
   return (size & 0xFFFF) | (variable ? 1u << 25 : 0u) | (priority & 3) << 26 | (type & 3) << 29;
 }
 
 struct forward_open_fields {
-  bool large = false;                     // Large_Forward_Open (0x5B), 32-bit parameters
-  std::uint32_t ot_id = 0, to_id = 0;     // proposed connection ids
+  bool large = false;                  // Large_Forward_Open (0x5B), 32-bit parameters
+  std::uint32_t ot_id = 0, to_id = 0;  // proposed connection ids
   std::uint16_t serial = 1, vendor = 0xFFFF;
   std::uint32_t originator_serial = 0x12345678;
-  std::uint8_t multiplier = 7;            // x512: no timeout while a test looks
+  std::uint8_t multiplier = 7;  // x512: no timeout while a test looks
   std::uint32_t ot_rpi = 20000, to_rpi = 20000;
   std::uint32_t ot_params = params16(38), to_params = params16(34);
-  std::uint8_t transport = 0x01;          // client, cyclic, class 1
-  bytes path;                             // key, application path, data segment
+  std::uint8_t transport = 0x01;  // client, cyclic, class 1
+  bytes path;                     // key, application path, data segment
 };
 
 // Service, request path (Connection Manager instance 1), then the fields in
 // order; the parameters as 2 bytes, or 4 when large.
 inline bytes forward_open(const forward_open_fields& f) {
   bytes b = hex(f.large ? "5B" : "54");
-  const auto head = hex("02 20 06 24 01"   // class 6, instance 1
-                        "0A 0E");          // priority/tick time, timeout ticks
+  const auto head =
+      hex("02 20 06 24 01"  // class 6, instance 1
+          "0A 0E");         // priority/tick time, timeout ticks
   b.insert(b.end(), head.begin(), head.end());
   put32(b, f.ot_id);
   put32(b, f.to_id);
@@ -48,9 +51,15 @@ inline bytes forward_open(const forward_open_fields& f) {
   b.push_back(f.multiplier);
   b.insert(b.end(), 3, 0);  // reserved
   put32(b, f.ot_rpi);
-  if (f.large) put32(b, f.ot_params); else put16(b, f.ot_params);
+  if (f.large)
+    put32(b, f.ot_params);
+  else
+    put16(b, f.ot_params);
   put32(b, f.to_rpi);
-  if (f.large) put32(b, f.to_params); else put16(b, f.to_params);
+  if (f.large)
+    put32(b, f.to_params);
+  else
+    put16(b, f.to_params);
   b.push_back(f.transport);
   b.push_back(static_cast<std::uint8_t>((f.path.size() + 1) / 2));
   b.insert(b.end(), f.path.begin(), f.path.end());
@@ -73,7 +82,8 @@ inline bytes forward_close(std::uint16_t serial, const bytes& path, std::uint16_
 
 // Electronic key segment (format 4): vendor, device type, product code,
 // major revision (bit 7: compatible), minor revision.
-inline bytes key(unsigned vendor, unsigned type, unsigned code, unsigned major, unsigned minor, bool compatible = true) {
+inline bytes key(unsigned vendor, unsigned type, unsigned code, unsigned major, unsigned minor,
+                 bool compatible = true) {
   bytes b = hex("34 04");
   put16(b, vendor);
   put16(b, type);

@@ -27,7 +27,10 @@ inline bytes hex(std::string_view s) {
   bytes out;
   int high = -1;
   for (const char c : s) {
-    const int v = c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
+    const int v = c >= '0' && c <= '9'   ? c - '0'
+                  : c >= 'a' && c <= 'f' ? c - 'a' + 10
+                  : c >= 'A' && c <= 'F' ? c - 'A' + 10
+                                         : -1;
     if (v < 0) continue;
     if (high < 0) {
       high = v;
@@ -186,9 +189,9 @@ inline bytes encap(unsigned command, std::uint32_t session, const bytes& data) {
   put16(m, command);
   put16(m, static_cast<unsigned>(data.size()));
   put32(m, session);
-  put32(m, 0);                                   // status
+  put32(m, 0);                                                                                  // status
   for (const char c : std::string_view("handmade")) m.push_back(static_cast<std::uint8_t>(c));  // sender context
-  put32(m, 0);                                   // options
+  put32(m, 0);                                                                                  // options
   m.insert(m.end(), data.begin(), data.end());
   return m;
 }
@@ -212,14 +215,15 @@ inline bytes send_rr_data(std::uint32_t session, const bytes& request) {
 // One O->T class 1 frame with a run/idle header: CPF with a sequenced
 // address item and a connected data item.
 inline bytes ot_frame(std::uint32_t connection_id, std::uint32_t sequence, bool run, const bytes& data) {
-  bytes f = hex("02 00"          // item count
-                "02 80 08 00");  // sequenced address item, 8 bytes
-  put32(f, connection_id);       //   connection id (the O->T id the device chose)
-  put32(f, sequence);            //   encapsulation sequence number
-  put16(f, 0x00B1);              // connected data item
+  bytes f =
+      hex("02 00"           // item count
+          "02 80 08 00");   // sequenced address item, 8 bytes
+  put32(f, connection_id);  //   connection id (the O->T id the device chose)
+  put32(f, sequence);       //   encapsulation sequence number
+  put16(f, 0x00B1);         // connected data item
   put16(f, static_cast<unsigned>(2 + 4 + data.size()));
-  put16(f, sequence & 0xFFFF);   //   CIP sequence count
-  put32(f, run ? 1 : 0);         //   run/idle header: bit 0 run
+  put16(f, sequence & 0xFFFF);  //   CIP sequence count
+  put32(f, run ? 1 : 0);        //   run/idle header: bit 0 run
   f.insert(f.end(), data.begin(), data.end());
   return f;
 }
@@ -277,7 +281,9 @@ struct session {
     if (!r || r->size() != 28 || le32(*r, 8) != 0 || le32(*r, 4) == 0) return std::nullopt;
     return session{std::move(*t), le32(*r, 4)};
   }
-  std::optional<cip_reply> ask(const bytes& request) const { return rr_reply(link.exchange(send_rr_data(handle, request))); }
+  std::optional<cip_reply> ask(const bytes& request) const {
+    return rr_reply(link.exchange(send_rr_data(handle, request)));
+  }
 };
 
 }  // namespace edsc::raw

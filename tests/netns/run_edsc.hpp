@@ -31,8 +31,8 @@ inline std::string quoted(const std::string& s) {
 
 inline edsc_run run_edsc(const std::string& args, int kill_after_s = 300) {
   const auto start = std::chrono::steady_clock::now();
-  const auto r = shell("timeout -s KILL " + std::to_string(kill_after_s) + " " + quoted(EDSC_BINARY) + " " + args +
-                       " 2>&1");
+  const auto r =
+      shell("timeout -s KILL " + std::to_string(kill_after_s) + " " + quoted(EDSC_BINARY) + " " + args + " 2>&1");
   edsc_run out;
   out.status = r.status;
   out.output = r.out;

@@ -42,8 +42,7 @@ std::vector<std::string> at_once(int n, Body body) {
       ::close(release[1]);
       const auto wait_for_all = [&] {
         char c;
-        while (::read(release[0], &c, 1) < 0 && errno == EINTR) {
-        }
+        while (::read(release[0], &c, 1) < 0 && errno == EINTR) {}
       };
       body(results[1], wait_for_all);
       ::_exit(0);
@@ -112,8 +111,10 @@ TEST(netns_isolation, one_subnet_asked_by_four_processes_goes_to_one) {
   ASSERT_EQ(got.size(), 4u);
   int holders = 0;
   for (const auto& g : got) {
-    if (g == "got 198.51.100.253") ++holders;
-    else EXPECT_NE(g.find("is taken"), std::string::npos) << g;
+    if (g == "got 198.51.100.253")
+      ++holders;
+    else
+      EXPECT_NE(g.find("is taken"), std::string::npos) << g;
   }
   // One, unless another test run held it all along (then none).
   EXPECT_LE(holders, 1) << ::testing::PrintToString(got);
@@ -160,8 +161,8 @@ TEST(netns_isolation, a_packet_to_an_address_of_no_test_network_cannot_leave) {
   const auto [udp, tcp] = send_errors(unused_test_address);
   EXPECT_EQ(udp, EHOSTUNREACH) << std::strerror(udp);
   EXPECT_EQ(tcp, EHOSTUNREACH) << std::strerror(tcp);
-  const auto inside = shell("ip netns exec " + n->ns + " bash -c 'exec 3<>/dev/udp/" + unused_test_address +
-                            "/44818' 2>&1");
+  const auto inside =
+      shell("ip netns exec " + n->ns + " bash -c 'exec 3<>/dev/udp/" + unused_test_address + "/44818' 2>&1");
   EXPECT_NE(inside.status, 0) << inside.out;
   EXPECT_NE(inside.out.find("unreachable"), std::string::npos) << inside.out;
 }

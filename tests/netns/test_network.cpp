@@ -62,7 +62,8 @@ std::set<int> subnets_in_use() {
   const auto addrs = shell("ip -o -4 addr show 2>/dev/null").out;
   std::set<int> used;
   const std::regex a(R"(198\.51\.100\.([0-9]+))");
-  for (std::sregex_iterator it(addrs.begin(), addrs.end(), a), end; it != end; ++it) used.insert(std::stoi((*it)[1]) / 4);
+  for (std::sregex_iterator it(addrs.begin(), addrs.end(), a), end; it != end; ++it)
+    used.insert(std::stoi((*it)[1]) / 4);
   return used;
 }
 
@@ -106,7 +107,8 @@ std::string keep_packets_in(const test_network& n) {
   run(std::string("ip route add ") + route);
   std::vector<std::pair<std::string, std::string>> places = {{"this host", ""},
                                                              {"the namespace " + n.ns, "ip netns exec " + n.ns + " "}};
-  if (!n.scanner_ns.empty()) places.emplace_back("the namespace " + n.scanner_ns, "ip netns exec " + n.scanner_ns + " ");
+  if (!n.scanner_ns.empty())
+    places.emplace_back("the namespace " + n.scanner_ns, "ip netns exec " + n.scanner_ns + " ");
   for (const auto& [where, prefix] : places) {
     const auto r = shell(prefix + "ip route get " + unused_test_address + " 2>&1");
     if (r.status == 0)
@@ -238,8 +240,8 @@ pid_t test_network::spawn_scanner(const std::vector<std::string>& argv, const st
 }
 
 pid_t test_network::capture(const std::string& pcap, bool scanner_side) {
-  const std::vector<std::string> argv = {"tcpdump", "-i", scanner_side ? host_if : dev_if, "--immediate-mode", "-U",
-                                         "-n", "-B", "8192", "-w", pcap};
+  const std::vector<std::string> argv = {
+      "tcpdump", "-i", scanner_side ? host_if : dev_if, "--immediate-mode", "-U", "-n", "-B", "8192", "-w", pcap};
   const auto pid = scanner_side ? spawn_scanner(argv, "tcpdump.log") : spawn(argv, "tcpdump.log");
   for (int i = 0; pid > 0 && i < 200 && shell("grep -q listening " + dir + "/tcpdump.log").status != 0; ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(50));

@@ -73,7 +73,7 @@ class test_network {
 
   std::string ns, host_if, dev_if, host_ip, device_ip, dir;
   std::string scanner_ns;  // where host_if and host_ip are; "" : this host
-  int subnet = -1;  // the /30's number: host .4n+1, device .4n+2
+  int subnet = -1;         // the /30's number: host .4n+1, device .4n+2
 
  private:
   test_network() = default;

@@ -32,7 +32,8 @@ std::string poll(unsigned in, unsigned out = 0) {
 
 class Automap : public Net {
  protected:
-  static std::string one(unsigned mac, const std::string& name, const std::string& conn, const std::string& extra = "") {
+  static std::string one(unsigned mac, const std::string& name, const std::string& conn,
+                         const std::string& extra = "") {
     return node(mac, name, "connections = [" + conn + "]" + (extra.empty() ? "" : "\n" + extra));
   }
 };
@@ -77,7 +78,8 @@ TEST_F(Automap, FixedNodeConnectionsAlignOneAfterTheOther) {
   // b fixed at DWord 2 (byte 8): 3 bytes, then 2 bytes at the next aligned
   // byte after 11. a (9 bytes, auto from 0) hits b's first block, then its
   // second, and lands after both.
-  const std::string nodes = one(2, "a", poll(9)) + one(3, "b", poll(3) + ", { type = \"cos\", input = 2 }", "input_dword = 2");
+  const std::string nodes =
+      one(2, "a", poll(9)) + one(3, "b", poll(3) + ", { type = \"cos\", input = 2 }", "input_dword = 2");
   struct want {
     const char* alignment;
     std::vector<std::string> input;
@@ -104,7 +106,8 @@ TEST_F(Automap, AFixedNodesEmptyConnectionTakesNoRoom) {
   // a fixed at DWord 1: its poll has no input, so its cos (2 bytes) is its
   // first input block, at byte 4; b (auto, 1 byte) from 0 fits before it.
   // Output: a is not fixed there, its poll's 2 bytes auto at 0.
-  const auto nodes = one(2, "a", poll(0, 2) + ", { type = \"cos\", input = 2 }", "input_dword = 1") + one(3, "b", poll(1));
+  const auto nodes =
+      one(2, "a", poll(0, 2) + ", { type = \"cos\", input = 2 }", "input_dword = 1") + one(3, "b", poll(1));
   auto c = check(header() + nodes);
   ASSERT_TRUE(c.result);
   const auto l = automap(*c.result);

@@ -46,8 +46,9 @@ TEST_F(Net, ThesisMapMatchesTheCheckedInText) {
   const auto r = run_edsc({"net", "map", thesis.string()});
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_EQ(r.output, read_bytes(fs::path(EDSC_PROJECT_DIR) / "docs" / "network-thesis.txt"));
-  EXPECT_NE(r.output.find("   12  panelview    Poll           12  16-27    74-79    4-6     Local:5:I.Data[4]..Data[6]"),
-            std::string::npos);
+  EXPECT_NE(
+      r.output.find("   12  panelview    Poll           12  16-27    74-79    4-6     Local:5:I.Data[4]..Data[6]"),
+      std::string::npos);
 }
 
 TEST_F(Net, ThesisMapJson) {
@@ -110,8 +111,8 @@ TEST_F(Net, SvgPlacesEachNodeWhereItsBytesAre) {
     int mac, first, bytes;
     std::string image;
   };
-  const box want[] = {{2, 0, 3, "I"}, {8, 4, 1, "I"}, {9, 8, 3, "I"}, {10, 12, 1, "I"}, {12, 16, 12, "I"},
-                      {12, 0, 8, "O"}};
+  const box want[] = {{2, 0, 3, "I"},   {8, 4, 1, "I"},    {9, 8, 3, "I"},
+                      {10, 12, 1, "I"}, {12, 16, 12, "I"}, {12, 0, 8, "O"}};
   static const std::regex node(
       R"re(<rect x="(\d+)" y="(\d+)" width="(\d+)" height="26" fill="[^"]+" class="node"><title>MAC (\d+) \w+: \w+ (\d+) bytes? (\d+)-(\d+), Local:5:(I|O)\.)re");
   std::vector<box> got;
@@ -127,7 +128,7 @@ TEST_F(Net, SvgPlacesEachNodeWhereItsBytesAre) {
     EXPECT_EQ(width, 18 * bytes);
     // The MAC is written in the box, 3 px in.
     EXPECT_NE(r.output.find("<text x=\"" + std::to_string(x + 3) + "\" y=\"" + std::to_string(y + 17) +
-                                "\" class=\"label\">" + m[4].str()),
+                            "\" class=\"label\">" + m[4].str()),
               std::string::npos);
     got.push_back({std::stoi(m[4]), first, bytes, m[8]});
     rows[m[8]].insert(y);
@@ -164,8 +165,8 @@ TEST_F(Net, ModbusActiveDeviceEntriesAreFourBytes) {
 // reading its product code (3, value 2 as discrete.eds says) is a match.
 TEST_F(Net, VerifyJudgesOnlyIdentityAttributesOneToFour) {
   const auto run = [&](const char* request, const char* answer) {
-    const auto log = file("id.tsv", std::string("step\tdir\tcan_id\tdata\n1\tM\t0x44C\t") + request + "\n2\tS\t0x44B\t" +
-                                        answer + "\n3\tS\t0x349\t00 00 01\n");
+    const auto log = file("id.tsv", std::string("step\tdir\tcan_id\tdata\n1\tM\t0x44C\t") + request +
+                                        "\n2\tS\t0x44B\t" + answer + "\n3\tS\t0x349\t00 00 01\n");
     return run_edsc({"verify", "--network", thesis.string(), "--capture", log.string(), "--color", "never"}).output;
   };
   const auto name = run("00 0E 01 01 07", "00 8E 04 4C 65 76");
@@ -178,7 +179,8 @@ TEST_F(Net, VerifyJudgesOnlyIdentityAttributesOneToFour) {
 }
 
 TEST_F(Net, NamesAreEscapedInEveryFormat) {
-  const auto net = file("e.toml", header() + node(3, "a<b>&\\\"c*/d", "connections = [{ type = \"poll\", input = 2, output = 1 }]"));
+  const auto net =
+      file("e.toml", header() + node(3, "a<b>&\\\"c*/d", "connections = [{ type = \"poll\", input = 2, output = 1 }]"));
   const auto svg = run_edsc({"net", "map", net.string(), "--format=svg"});
   ASSERT_EQ(svg.status, 0);
   EXPECT_EQ(svg.output.find("a<b>"), std::string::npos);
@@ -202,7 +204,8 @@ TEST_F(Net, MapOfABrokenNetworkWritesNothing) {
 }
 
 TEST_F(Net, VerifyPrototypesCapture) {
-  const auto r = run_edsc({"verify", "--network", thesis.string(), "--capture", prototypes.string(), "--color", "never"});
+  const auto r =
+      run_edsc({"verify", "--network", thesis.string(), "--capture", prototypes.string(), "--color", "never"});
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("    9  discrete     seen       1, lengths agree"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("   12  panelview    not seen   none"), std::string::npos);

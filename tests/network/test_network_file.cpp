@@ -10,8 +10,7 @@ using edsc::severity;
 namespace {
 
 TEST_F(Net, ThesisChecksClean) {
-  auto c = edsc::network::check_network(
-      std::make_unique<edsc::source_file>(thesis.string(), read_bytes(thesis)), {});
+  auto c = edsc::network::check_network(std::make_unique<edsc::source_file>(thesis.string(), read_bytes(thesis)), {});
   EXPECT_EQ(ids(c.diags), (std::vector<std::string>{"net-node-without-eds"}));
   EXPECT_TRUE(c.eds_reports.empty());
   ASSERT_TRUE(c.result);
@@ -75,10 +74,11 @@ TEST_F(Net, MissingEdsIsLocatedAtItsPath) {
 }
 
 TEST_F(Net, EdsErrorsAppearLocatedInTheEds) {
-  const auto broken = file("broken.eds", "[Device]\nVendCode = 1;\nProdType = 6;\nProdCode = 44;\nMajRev = 1;\n"
-                                         "MinRev = 1;\nProdName = \"X\";\n[IO_Info]\nDefault = 0x0004;\n"
-                                         "COSInfo = 0x0004, 1, 0;\nInput1 = 1, 8, 0x0004, \"In\", 6, \"20 04 24 01 30 03\", \"\";\n"
-                                         "[Params\n");
+  const auto broken = file("broken.eds",
+                           "[Device]\nVendCode = 1;\nProdType = 6;\nProdCode = 44;\nMajRev = 1;\n"
+                           "MinRev = 1;\nProdName = \"X\";\n[IO_Info]\nDefault = 0x0004;\n"
+                           "COSInfo = 0x0004, 1, 0;\nInput1 = 1, 8, 0x0004, \"In\", 6, \"20 04 24 01 30 03\", \"\";\n"
+                           "[Params\n");
   auto c = check(header() + node(8, "a", "eds = \"broken.eds\""));
   EXPECT_EQ(ids(c.diags), (std::vector<std::string>{"net-eds-errors"}));
   ASSERT_EQ(c.eds_reports.size(), 1u);
@@ -89,7 +89,8 @@ TEST_F(Net, EdsErrorsAppearLocatedInTheEds) {
 
 TEST_F(Net, ConnectionTheEdsDoesNotOffer) {
   // RightSight: PollInfo = 0x0001, 0, 0 and no InputN allows poll.
-  auto c = check(header() + node(2, "rs", "eds = \"" + eds("rightsight-42ef-3byte.eds") + "\"\nconnections = [\"poll\"]"));
+  auto c =
+      check(header() + node(2, "rs", "eds = \"" + eds("rightsight-42ef-3byte.eds") + "\"\nconnections = [\"poll\"]"));
   EXPECT_EQ(ids(c.diags), (std::vector<std::string>{"net-connection-not-offered"}));
   EXPECT_EQ(at(*c.source, c.diags[0]), "15:16");
 }
@@ -106,15 +107,18 @@ TEST_F(Net, RightSightSizesAreOneOrThreeNotTwo) {
     ASSERT_TRUE(c.result);
     EXPECT_EQ(c.result->nodes[0].connections[0].input, static_cast<unsigned>(std::stoi(ok)));
   }
-  auto strobe_out = check(header() + node(2, "rs", "eds = \"" + eds("rightsight-42ef-3byte.eds") +
-                                                        "\"\nconnections = [{ type = \"strobe\", output = 1 }]"));
+  auto strobe_out = check(header() + node(2, "rs",
+                                          "eds = \"" + eds("rightsight-42ef-3byte.eds") +
+                                              "\"\nconnections = [{ type = \"strobe\", output = 1 }]"));
   EXPECT_EQ(ids(strobe_out.diags), (std::vector<std::string>{"net-size-not-allowed"}));
 }
 
 TEST_F(Net, CosAndCyclicConflict) {
-  auto c = check(header() + node(8, "t", "eds = \"" + eds("nodes/temperature.eds") + "\"\nconnections = [\"cos\", \"cos\"]"));
+  auto c = check(header() +
+                 node(8, "t", "eds = \"" + eds("nodes/temperature.eds") + "\"\nconnections = [\"cos\", \"cos\"]"));
   EXPECT_EQ(ids(c.diags), (std::vector<std::string>{"net-connection-conflict"}));
-  auto d = check(header() + node(8, "x", "connections = [{ type = \"cos\", input = 1 }, { type = \"cyclic\", input = 1 }]"));
+  auto d =
+      check(header() + node(8, "x", "connections = [{ type = \"cos\", input = 1 }, { type = \"cyclic\", input = 1 }]"));
   EXPECT_EQ(ids(d.diags), (std::vector<std::string>{"net-node-without-eds", "net-connection-conflict"}));
 }
 
@@ -129,7 +133,8 @@ TEST_F(Net, EqualIdentitiesWarn) {
 
 TEST_F(Net, CableLengthsOverTheLimit) {
   const auto net = [&](const std::string& keys) {
-    return check("[network]\nkind = \"devicenet\"\nbaud = 500\n" + keys + "\n[scanner]\nprofile = \"1769-SDN\"\nmac = 0\n");
+    return check("[network]\nkind = \"devicenet\"\nbaud = 500\n" + keys +
+                 "\n[scanner]\nprofile = \"1769-SDN\"\nmac = 0\n");
   };
   EXPECT_EQ(ids(net("cable = \"thick\"\ntrunk_length = 100").diags), std::vector<std::string>{});
   EXPECT_EQ(ids(net("cable = \"thick\"\ntrunk_length = 101").diags),

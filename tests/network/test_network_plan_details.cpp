@@ -52,8 +52,9 @@ TEST_F(Net, OnlyAWholeWrittenIdentityIsKeyed) {
   EXPECT_FALSE(keyed("{ device_type = 24, product_code = 5 }"));
   EXPECT_FALSE(keyed("{ vendor = 1, device_type = 24 }"));
   EXPECT_FALSE(keyed("{ product = \"PanelView 300\" }"));
-  auto c = check(header() + node(3, "a", "connections = [{ type = \"poll\", input = 1 }]\n"
-                                         "identity = { vendor = 1, device_type = 24, product_code = 5, major = 2 }"));
+  auto c = check(header() + node(3, "a",
+                                 "connections = [{ type = \"poll\", input = 1 }]\n"
+                                 "identity = { vendor = 1, device_type = 24, product_code = 5, major = 2 }"));
   ASSERT_TRUE(c.result);
   ASSERT_TRUE(c.result->nodes.at(0).identity.has_value());
   const auto& id = *c.result->nodes[0].identity;
@@ -118,7 +119,8 @@ TEST_F(Net, ALengthMustBeANumberFromZero) {
                      "\n[scanner]\nprofile = \"1769-SDN\"\nmac = 0\n")
                    .diags);
   };
-  for (const char* bad : {"\"40\"", "true", "-1", "-0.5", "1e9"}) EXPECT_EQ(net(bad), std::vector<std::string>{"net-key-type"}) << bad;
+  for (const char* bad : {"\"40\"", "true", "-1", "-0.5", "1e9"})
+    EXPECT_EQ(net(bad), std::vector<std::string>{"net-key-type"}) << bad;
   EXPECT_EQ(net("0"), std::vector<std::string>{});
   EXPECT_EQ(net("0.0"), std::vector<std::string>{});
 }

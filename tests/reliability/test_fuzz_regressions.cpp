@@ -20,10 +20,10 @@ namespace fs = std::filesystem;
 
 using body = std::string (*)(std::string_view);
 
-const std::map<std::string, body> bodies = {
-    {"parse", parse_body}, {"check", check_body}, {"fmt", fmt_body},         {"edit", edit_body},
-    {"header", header_body}, {"lsp", lsp_body},   {"network", network_body}, {"diff", diff_body},
-    {"cip", cip_body}, {"sim", sim_body}, {"session", session_body}};
+const std::map<std::string, body> bodies = {{"parse", parse_body},     {"check", check_body},    {"fmt", fmt_body},
+                                            {"edit", edit_body},       {"header", header_body},  {"lsp", lsp_body},
+                                            {"network", network_body}, {"diff", diff_body},      {"cip", cip_body},
+                                            {"sim", sim_body},         {"session", session_body}};
 
 // Replays the files of tests/fuzz/<folder>/<target>/; returns how many.
 std::size_t replay(const std::string& target, body run, const char* folder = "regressions") {
@@ -68,8 +68,8 @@ TEST(FuzzRegressions, EveryFolderIsATargetWithInputs) {
 
 // Every body also runs on a few shapes the fuzzers start from.
 TEST(FuzzRegressions, Seeds) {
-  for (const std::string& input : {std::string(), std::string("["), std::string("[File]\nA = {{{{"),
-                                  std::string("\xff\xfe\0", 3)}) {
+  for (const std::string& input :
+       {std::string(), std::string("["), std::string("[File]\nA = {{{{"), std::string("\xff\xfe\0", 3)}) {
     for (const auto& [name, run] : bodies) EXPECT_EQ(run(input), "") << name;
   }
 }

@@ -57,7 +57,8 @@ TEST_F(Hostile, UnreadableFile) {
 
 TEST_F(Hostile, MissingPath) {
   const auto p = (dir_ / "no-such.eds").string();
-  for (const char* cmd : {"check", "dump", "fmt"}) expect_clear_rejection(run_edsc({cmd, p}, time_limit), "no-such.eds");
+  for (const char* cmd : {"check", "dump", "fmt"})
+    expect_clear_rejection(run_edsc({cmd, p}, time_limit), "no-such.eds");
 }
 
 TEST_F(Hostile, UnterminatedStringAtEnd) {
@@ -134,8 +135,8 @@ TEST_F(Hostile, Utf16FileIsOneClearDiagnostic) {
   EXPECT_NE(r.output.find("[input-utf16]"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("1 file checked: 1 error, 0 warnings, 0 notes"), std::string::npos) << r.output;
   // The commands that report no diagnostics of their own stop on it too.
-  for (const std::vector<std::string>& args : {std::vector<std::string>{"dump", p.string()},
-                                                {"header", p.string(), "-o", (dir_ / "out.h").string()}}) {
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"dump", p.string()}, {"header", p.string(), "-o", (dir_ / "out.h").string()}}) {
     const auto d = run_edsc(args, time_limit);
     EXPECT_EQ(d.status, 1) << args[0] << "\n" << d.output;
     EXPECT_NE(d.output.find("[input-utf16]"), std::string::npos) << d.output;

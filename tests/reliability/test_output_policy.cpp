@@ -199,8 +199,8 @@ TEST_F(OutputPolicy, TheInputIsRefusedHoweverItIsNamed) {
         const auto r = run_edsc(c.args(dir_, t), time_limit);
         EXPECT_EQ(r.status, 2) << c.name << " -o " << t << "\n" << r.output;
         EXPECT_NE(r.output.find("edsc: error: "), std::string::npos) << r.output;
-        EXPECT_NE(r.output.find("refusing to overwrite the input"), std::string::npos) << c.name << " -o " << t
-                                                                                       << "\n" << r.output;
+        EXPECT_NE(r.output.find("refusing to overwrite the input"), std::string::npos) << c.name << " -o " << t << "\n"
+                                                                                       << r.output;
       }
       EXPECT_TRUE(fs::is_symlink(d / "link")) << c.name;
     }
@@ -251,8 +251,10 @@ TEST_F(OutputPolicy, AFifoIsWrittenThroughAndStaysAFifo) {
         pollfd p{rd, POLLIN, 0};
         ::poll(&p, 1, 20);
         const ssize_t n = ::read(rd, buf, sizeof buf);
-        if (n > 0) got.append(buf, static_cast<std::size_t>(n));
-        else if (done) break;  // no writer left and edsc has ended: all read
+        if (n > 0)
+          got.append(buf, static_cast<std::size_t>(n));
+        else if (done)
+          break;  // no writer left and edsc has ended: all read
       }
     });
     const auto r = run_edsc(c.args(dir_, (d / "out").string()), time_limit);
@@ -387,8 +389,8 @@ TEST_F(OutputPolicy, StreamNamesAppendToAFileOpenedForAppend) {
       const auto d = fresh_dir();
       // The other standard streams go to a file of their own, so that what
       // lands on the named stream is its output alone.
-      const std::string rest = s.fd == 2 ? " >" + shell_quote((d / "rest").string())
-                                         : " 2>" + shell_quote((d / "rest").string());
+      const std::string rest =
+          s.fd == 2 ? " >" + shell_quote((d / "rest").string()) : " 2>" + shell_quote((d / "rest").string());
       // What the stream gets when its file starts empty...
       const auto alone = (d / "alone").string();
       int status = run_redirected(c.args(dir_, s.name), std::to_string(s.fd) + ">" + shell_quote(alone) + rest);
@@ -400,8 +402,8 @@ TEST_F(OutputPolicy, StreamNamesAppendToAFileOpenedForAppend) {
       write_bytes(appended, before);
       struct stat st0 {};
       ASSERT_EQ(::stat(appended.c_str(), &st0), 0);
-      status = run_redirected(c.args(dir_, s.name),
-                              std::to_string(s.fd) + ">>" + shell_quote(appended.string()) + rest);
+      status =
+          run_redirected(c.args(dir_, s.name), std::to_string(s.fd) + ">>" + shell_quote(appended.string()) + rest);
       EXPECT_EQ(status, 0) << c.name << " -o " << s.name << "\n" << read_bytes(d / "rest");
       const auto got = read_bytes(appended);
       EXPECT_TRUE(got.starts_with(before)) << c.name << " -o " << s.name << ": what the file held is lost";
@@ -427,10 +429,25 @@ TEST_F(OutputPolicy, AStreamNameOfAClosedDescriptorIsRefused) {
 // other source of the compiler opens a file for writing, renames or copies
 // one; every writer goes through io::write_output and its policy.
 TEST(OutputPolicySources, NothingOutsideIoWritesAFileItself) {
-  const std::vector<std::string> raw{"ofstream",  "std::fstream", "fopen(",       "O_WRONLY",      "O_RDWR",
-                                     "O_CREAT",   "O_TRUNC",      "creat(",       "mkstemp",       "::rename(",
-                                     "std::rename(", "fs::rename(", "filesystem::rename(", "copy_file", "fs::copy(",
-                                     "filesystem::copy(", "write_atomically", "write_fully", "io/write_file.hpp"};
+  const std::vector<std::string> raw{"ofstream",
+                                     "std::fstream",
+                                     "fopen(",
+                                     "O_WRONLY",
+                                     "O_RDWR",
+                                     "O_CREAT",
+                                     "O_TRUNC",
+                                     "creat(",
+                                     "mkstemp",
+                                     "::rename(",
+                                     "std::rename(",
+                                     "fs::rename(",
+                                     "filesystem::rename(",
+                                     "copy_file",
+                                     "fs::copy(",
+                                     "filesystem::copy(",
+                                     "write_atomically",
+                                     "write_fully",
+                                     "io/write_file.hpp"};
   const auto compiler = fs::path(EDSC_PROJECT_DIR) / "compiler";
   std::size_t files = 0;
   for (const auto& e : fs::recursive_directory_iterator(compiler)) {

@@ -29,9 +29,9 @@ class sim_asymmetric : public ::testing::Test {
  protected:
   void SetUp() override {
     // Assem100 fixed, so T->O data tells which instance produced it.
-    sim_ = running_sim::start("asym.eds", {"--inputs", "inputs.json"},
-                              {{"asym.eds", asym_eds},
-                               {"inputs.json", R"({"100": "000102030405060708090a0b0c0d0e0f1011121314151617"})"}});
+    sim_ = running_sim::start(
+        "asym.eds", {"--inputs", "inputs.json"},
+        {{"asym.eds", asym_eds}, {"inputs.json", R"({"100": "000102030405060708090a0b0c0d0e0f1011121314151617"})"}});
     if (!sim_.net) GTEST_SKIP() << sim_.why;
     ASSERT_TRUE(sim_.running()) << sim_.why;
   }
@@ -90,16 +90,28 @@ TEST_F(sim_asymmetric, each_field_swapped_between_the_directions_is_refused_for_
     const char* why;
   };
   const swap swaps[] = {
-      {"sizes", [](auto& f) { f.ot_params = raw::params16(26), f.to_params = raw::params16(14); }, {0x0127, 14},
+      {"sizes",
+       [](auto& f) { f.ot_params = raw::params16(26), f.to_params = raw::params16(14); },
+       {0x0127, 14},
        "O->T size 26 asked; Connection1 serves 14 (8 data bytes + 2 sequence + 4 run/idle)"},
-      {"T->O size alone", [](auto& f) { f.to_params = raw::params16(14); }, {0x0128, 26},
+      {"T->O size alone",
+       [](auto& f) { f.to_params = raw::params16(14); },
+       {0x0128, 26},
        "T->O size 14 asked; Connection1 serves 26 (24 data bytes + 2 sequence)"},
-      {"RPIs", [](auto& f) { f.ot_rpi = 50000, f.to_rpi = 20000; }, {0x0111},
+      {"RPIs",
+       [](auto& f) { f.ot_rpi = 50000, f.to_rpi = 20000; },
+       {0x0111},
        "T->O RPI 20000 us asked; Connection1 allows 40000..1000000 us (the limits of Param2)"},
-      {"types", [](auto& f) { f.ot_params = raw::params16(14, raw::multicast), f.to_params = raw::params16(26); },
-       {0x0123}, "O->T connection type multicast asked; Connection1 allows point-to-point"},
-      {"instances", [](auto& f) { f.path = raw::cat({raw::key(65535, 12, 35, 1, 4), hex("20 04 24 97 2C 64 2C 96")}); },
-       {0x012F}, "no ConnectionN has the application path class 4, instance 151, connection point 100, connection point 150"},
+      {"types",
+       [](auto& f) { f.ot_params = raw::params16(14, raw::multicast), f.to_params = raw::params16(26); },
+       {0x0123},
+       "O->T connection type multicast asked; Connection1 allows point-to-point"},
+      {"instances",
+       [](auto& f) {
+         f.path = raw::cat({raw::key(65535, 12, 35, 1, 4), hex("20 04 24 97 2C 64 2C 96")});
+       },
+       {0x012F},
+       "no ConnectionN has the application path class 4, instance 151, connection point 100, connection point 150"},
   };
   std::uint16_t serial = 0x0B00;
   for (const auto& w : swaps) {
@@ -139,7 +151,8 @@ TEST_F(sim_asymmetric, frames_have_each_directions_size_and_instance) {
   };
   ASSERT_TRUE(io->send_to(sim_.ip(), 2222, frame(1, 24)));
   auto log = sim_.wait_for("\"event\":\"wrong-size\"");
-  EXPECT_NE(log.find("{\"event\":\"wrong-size\",\"connection\":1,\"bytes\":24,\"expected\":8}"), std::string::npos) << log;
+  EXPECT_NE(log.find("{\"event\":\"wrong-size\",\"connection\":1,\"bytes\":24,\"expected\":8}"), std::string::npos)
+      << log;
   ASSERT_TRUE(io->send_to(sim_.ip(), 2222, frame(2, 8)));
   log = sim_.wait_for("\"event\":\"output\"");
   EXPECT_NE(log.find("{\"event\":\"output\",\"instance\":150,\"connection\":1,\"run\":true,\"sequence\":2,"

@@ -17,8 +17,8 @@
 
 #include "corpus_dirs.hpp"
 #include "sim_network.hpp"
-#include "time_scale.hpp"
 #include "test_paths.hpp"
+#include "time_scale.hpp"
 
 namespace edsc::sim_test {
 namespace {

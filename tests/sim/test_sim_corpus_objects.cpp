@@ -69,9 +69,10 @@ TEST(sim_corpus_objects, every_parameter_and_every_file_is_served) {
     EXPECT_TRUE(got == s.dev.file.content);  // bytes, not chars: files with Windows-1252 text compare right
   }
   EXPECT_EQ(files, corpora::sample().size());
-  std::printf("Parameter object over %zu files: %zu parameters, %zu settable numbers, %zu with a default outside "
-              "their own limits\n",
-              files, params, settable, default_outside);
+  std::printf(
+      "Parameter object over %zu files: %zu parameters, %zu settable numbers, %zu with a default outside "
+      "their own limits\n",
+      files, params, settable, default_outside);
 }
 
 }  // namespace

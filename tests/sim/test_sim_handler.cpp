@@ -37,10 +37,13 @@ class sim_handler : public ::testing::Test {
   // A CIP request through SendRRData on a registered session; the CIP reply.
   cip::reply ask(cip::byte_view request) {
     if (l_.session == 0) {
-      auto r = handle_encap(s_, l_, cip::encode_encap(cip::command::register_session, 0, {}, cip::register_session_data()).value(), true, now_);
+      auto r = handle_encap(
+          s_, l_, cip::encode_encap(cip::command::register_session, 0, {}, cip::register_session_data()).value(), true,
+          now_);
       EXPECT_TRUE(r.reply);
     }
-    const auto msg = cip::encode_encap(cip::command::send_rr_data, l_.session, {}, cip::send_rr_data(request, 5).value()).value();
+    const auto msg =
+        cip::encode_encap(cip::command::send_rr_data, l_.session, {}, cip::send_rr_data(request, 5).value()).value();
     auto out = handle_encap(s_, l_, msg, true, now_);
     EXPECT_TRUE(out.reply);
     auto h = cip::decode_encap_header(*out.reply);
@@ -74,21 +77,28 @@ TEST_F(sim_handler, encapsulation_errors_are_the_protocols) {
   ASSERT_TRUE(out.reply);
   EXPECT_EQ(hex(*out.reply), "6F 00 00 00 78 56 34 12 64 00 00 00 01 02 03 04 05 06 07 08 00 00 00 00");
   // An unknown command: 0x0001 invalid command.
-  out = handle_encap(s_, l_, unhex("99 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00"), true, now_);
+  out = handle_encap(s_, l_, unhex("99 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00"), true,
+                     now_);
   ASSERT_TRUE(out.reply);
   EXPECT_EQ(cip::decode_encap_header(*out.reply)->status, 0x0001u);
   // A length that lies: 0x0065, and the TCP connection ends.
-  out = handle_encap(s_, l_, unhex("65 00 08 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 01 00"), true, now_);
+  out = handle_encap(s_, l_, unhex("65 00 08 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 01 00"),
+                     true, now_);
   ASSERT_TRUE(out.reply);
   EXPECT_EQ(cip::decode_encap_header(*out.reply)->status, 0x0065u);
   EXPECT_TRUE(out.close);
   // RegisterSession with protocol version 2: 0x0069.
-  out = handle_encap(s_, l_, unhex("65 00 04 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 02 00 00 00"), true, now_);
+  out = handle_encap(
+      s_, l_, unhex("65 00 04 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 02 00 00 00"), true, now_);
   EXPECT_EQ(cip::decode_encap_header(*out.reply)->status, 0x0069u);
   // NOP is never answered; a datagram asking for a session gets nothing.
   EXPECT_FALSE(handle_encap(s_, l_, cip::encode_encap(cip::command::nop, 0, {}, {}).value(), true, now_).reply);
   link udp;
-  EXPECT_FALSE(handle_encap(s_, udp, cip::encode_encap(cip::command::register_session, 0, {}, cip::register_session_data()).value(), false, now_).reply);
+  EXPECT_FALSE(
+      handle_encap(s_, udp,
+                   cip::encode_encap(cip::command::register_session, 0, {}, cip::register_session_data()).value(),
+                   false, now_)
+          .reply);
 }
 
 TEST_F(sim_handler, identity_from_device_section_with_the_given_serial) {
@@ -154,7 +164,11 @@ TEST_F(sim_handler, forward_open_refusals_are_openers) {
       {"RPI 20 s", [](auto& fo) { fo.ot_rpi_us = fo.to_rpi_us = 20'000'000; }, {0x0111}},
       {"class 0", [](auto& fo) { fo.transport = 0x00; }, {0x011C}},
       {"change of state trigger", [](auto& fo) { fo.transport = 0x11; }, {0x0103}},
-      {"a reserved segment", [](auto& fo) { fo.path.insert(fo.path.end(), {0x5F, 0x00}); }, {0x0315}},
+      {"a reserved segment",
+       [](auto& fo) {
+         fo.path.insert(fo.path.end(), {0x5F, 0x00});
+       },
+       {0x0315}},
   };
   for (const auto& f : faults) {
     auto fo = live_test::opener_connection1_request();
@@ -260,7 +274,9 @@ TEST_F(sim_handler, class_3_connections_carry_explicit_requests) {
   ASSERT_EQ(rep.general, 0);
   const auto ids = cip::decode_forward_open_ok(rep.data, 0).value();
   const auto req = cip::encode_request(0x0E, cip::logical_path(1, 1, 1)).value();
-  const auto msg = cip::encode_encap(cip::command::send_unit_data, l_.session, {}, cip::send_unit_data(ids.ot_connection_id, 7, req).value()).value();
+  const auto msg = cip::encode_encap(cip::command::send_unit_data, l_.session, {},
+                                     cip::send_unit_data(ids.ot_connection_id, 7, req).value())
+                       .value();
   auto out = handle_encap(s_, l_, msg, true, now_);
   ASSERT_TRUE(out.reply);
   auto u = cip::decode_send_unit_data(cip::byte_view(*out.reply).subspan(24), 24);
@@ -320,11 +336,15 @@ TEST_F(sim_handler, class_attributes_of_identity_and_assembly) {
 // A reply too large for the item and the encapsulation that carry it is not
 // sent cut: the TCP connection closes, and the event names the field.
 TEST_F(sim_handler, a_reply_too_large_to_send_closes_the_connection) {
-  auto r = handle_encap(s_, l_, cip::encode_encap(cip::command::register_session, 0, {}, cip::register_session_data()).value(), true, now_);
+  auto r = handle_encap(s_, l_,
+                        cip::encode_encap(cip::command::register_session, 0, {}, cip::register_session_data()).value(),
+                        true, now_);
   ASSERT_TRUE(r.reply);
   s_.dev.assembly(100)->data.assign(70000, 0x5A);
   const auto get = cip::encode_request(cip::service::get_attribute_single, cip::logical_path(4, 100, 3)).value();
-  const auto out = handle_encap(s_, l_, cip::encode_encap(cip::command::send_rr_data, l_.session, {}, cip::send_rr_data(get, 5).value()).value(), true, now_);
+  const auto out = handle_encap(
+      s_, l_, cip::encode_encap(cip::command::send_rr_data, l_.session, {}, cip::send_rr_data(get, 5).value()).value(),
+      true, now_);
   EXPECT_FALSE(out.reply);
   EXPECT_TRUE(out.close);
   ASSERT_FALSE(s_.log.empty());

@@ -9,12 +9,12 @@
 #include <fstream>
 
 #include "edit/analyze.hpp"
-#include "netns/live_support.hpp"
 #include "live/loopback_server.hpp"
+#include "netns/live_support.hpp"
 #include "netns/run_edsc.hpp"
 #include "netns/test_network.hpp"
-#include "sim_eds.hpp"
 #include "sim/inputs.hpp"
+#include "sim_eds.hpp"
 
 namespace edsc::sim {
 namespace {
@@ -134,16 +134,18 @@ TEST_F(sim_inputs, a_json_file_takes_hex_or_fields) {
 TEST_F(sim_inputs, control_lines_are_answered_by_a_json_line_all_or_nothing) {
   EXPECT_EQ(control(s_, "set 100 Speed=5 Run=1"),
             R"j({"event":"control","ok":true,"instance":100,"data":"0500010000000000"})j");
-  EXPECT_EQ(control(s_, "set Assem5 Speed=6 Run=3"),
-            R"j({"event":"control","ok":false,"error":"\"Run\" (Param2) is a 1-bit unsigned field: 3 does not fit (0..1)","rule":"sim-inputs-value-range"})j");
+  EXPECT_EQ(
+      control(s_, "set Assem5 Speed=6 Run=3"),
+      R"j({"event":"control","ok":false,"error":"\"Run\" (Param2) is a 1-bit unsigned field: 3 does not fit (0..1)","rule":"sim-inputs-value-range"})j");
   EXPECT_EQ(control(s_, "get 100"), R"j({"event":"control","ok":true,"instance":100,"data":"0500010000000000"})j");
   EXPECT_EQ(control(s_, "set 100 0102030405060708"),
             R"j({"event":"control","ok":true,"instance":100,"data":"0102030405060708"})j");
   EXPECT_EQ(control(s_, "set 100 speed=0x10 Gain_Value=-1"),
             R"j({"event":"control","ok":true,"instance":100,"data":"100003000080bf08"})j");
   EXPECT_EQ(control(s_, "  "), "");
-  EXPECT_EQ(control(s_, "set 7 00"),
-            R"j({"event":"control","ok":false,"error":"\"7\" names no assembly of the EDS (an instance number such as 100, or AssemN)","rule":"sim-inputs-unknown-assembly"})j");
+  EXPECT_EQ(
+      control(s_, "set 7 00"),
+      R"j({"event":"control","ok":false,"error":"\"7\" names no assembly of the EDS (an instance number such as 100, or AssemN)","rule":"sim-inputs-unknown-assembly"})j");
   EXPECT_NE(control(s_, "frob 100").find("unknown command \\\"frob\\\""), std::string::npos);
   EXPECT_NE(control(s_, "frob 100").find(R"("rule":"sim-inputs-syntax")"), std::string::npos);
   EXPECT_NE(control(s_, "set 100 Nope=1").find(R"("rule":"sim-inputs-unknown-field")"), std::string::npos);
@@ -186,8 +188,8 @@ TEST_F(sim_inputs_cli, a_bad_inputs_file_stops_edsc_sim_with_its_place) {
   // An address no interface holds: a simulator that got past the check
   // could listen nowhere, and meets no other test.
   const std::string nowhere = live_test::unused_test_address;
-  const auto r = live_test::run_edsc("sim " + live_test::quoted(eds) + " --address " + nowhere + " --inputs " +
-                                     live_test::quoted(toml), 30);
+  const auto r = live_test::run_edsc(
+      "sim " + live_test::quoted(eds) + " --address " + nowhere + " --inputs " + live_test::quoted(toml), 30);
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find(toml + ":2:7: error: \"Run\" (Param2) is a 1-bit unsigned field: 2 does not fit (0..1) "
                                  "[sim-inputs-value-range]\n"),
@@ -196,10 +198,12 @@ TEST_F(sim_inputs_cli, a_bad_inputs_file_stops_edsc_sim_with_its_place) {
   EXPECT_NE(r.output.find("run = 2\n"), std::string::npos) << r.output;
   const auto json = (dir / "bad.json").string();
   std::ofstream(json) << "{\"100\": \"01\"}";
-  const auto j = live_test::run_edsc("sim " + live_test::quoted(eds) + " --address " + nowhere + " --inputs " +
-                                     live_test::quoted(json) + " --stdin", 30);
+  const auto j = live_test::run_edsc(
+      "sim " + live_test::quoted(eds) + " --address " + nowhere + " --inputs " + live_test::quoted(json) + " --stdin",
+      30);
   EXPECT_EQ(j.status, 2) << j.output;
-  EXPECT_NE(j.output.find(json + ":1:2: error: instance 100 holds 8 bytes, 1 given [sim-inputs-hex]"), std::string::npos)
+  EXPECT_NE(j.output.find(json + ":1:2: error: instance 100 holds 8 bytes, 1 given [sim-inputs-hex]"),
+            std::string::npos)
       << j.output;
   std::filesystem::remove_all(dir);
 }

@@ -15,8 +15,8 @@
 #include "netns/live_support.hpp"
 #include "netns/run_edsc.hpp"
 #include "netns/test_network.hpp"
-#include "sim_eds.hpp"
 #include "sim/inputs.hpp"
+#include "sim_eds.hpp"
 #include "test_paths.hpp"
 
 namespace edsc::sim {
@@ -57,10 +57,12 @@ TEST(sim_inputs_names, messages_list_each_field_once_with_the_right_article) {
   const auto a = analyze_file(opener_eds);
   state s;
   s.dev = build_device(a->dev, 1);
-  EXPECT_EQ(control(s, "set 100 Nope=1"),
-            R"j({"event":"control","ok":false,"error":"instance 100 has no field \"Nope\"; its fields: \"Input Data\" (Param1)","rule":"sim-inputs-unknown-field"})j");
-  EXPECT_EQ(control(s, "set 100 Param1=256"),
-            R"j({"event":"control","ok":false,"error":"\"Input Data\" (Param1) is an 8-bit unsigned field: 256 does not fit (0..255)","rule":"sim-inputs-value-range"})j");
+  EXPECT_EQ(
+      control(s, "set 100 Nope=1"),
+      R"j({"event":"control","ok":false,"error":"instance 100 has no field \"Nope\"; its fields: \"Input Data\" (Param1)","rule":"sim-inputs-unknown-field"})j");
+  EXPECT_EQ(
+      control(s, "set 100 Param1=256"),
+      R"j({"event":"control","ok":false,"error":"\"Input Data\" (Param1) is an 8-bit unsigned field: 256 does not fit (0..255)","rule":"sim-inputs-value-range"})j");
 }
 
 class sim_inputs_twice : public ::testing::Test {
@@ -76,8 +78,9 @@ class sim_inputs_twice : public ::testing::Test {
 // Two parameters of one name: refused, naming the ParamN that tell them apart;
 // by ParamN each is set alone.
 TEST_F(sim_inputs_twice, a_name_two_parameters_share_is_refused_as_ambiguous) {
-  EXPECT_EQ(control(s_, "set 100 speed=1"),
-            R"j({"event":"control","ok":false,"error":"\"speed\" names 2 fields of instance 100: \"Speed\" (Param1), \"Speed\" (Param2); name one by its ParamN","rule":"sim-inputs-unknown-field"})j");
+  EXPECT_EQ(
+      control(s_, "set 100 speed=1"),
+      R"j({"event":"control","ok":false,"error":"\"speed\" names 2 fields of instance 100: \"Speed\" (Param1), \"Speed\" (Param2); name one by its ParamN","rule":"sim-inputs-unknown-field"})j");
   EXPECT_EQ(hex(s_.dev.assembly(100)->data), "00 00 00 00");
   EXPECT_EQ(control(s_, "set 100 Param2=7"), R"j({"event":"control","ok":true,"instance":100,"data":"00070000"})j");
   auto e = load_inputs(s_.dev, "in.toml", "[Assem5]\nSpeed = 1\n");
@@ -128,8 +131,9 @@ TEST_F(sim_inputs_names_cli, a_folder_as_the_inputs_file_is_an_error_in_words) {
   // An address no interface holds: a simulator that got past the check
   // could listen nowhere, and meets no other test.
   const std::string nowhere = live_test::unused_test_address;
-  const auto r = live_test::run_edsc("sim " + live_test::quoted(opener_eds) + " --address " + nowhere + " --inputs " +
-                                     live_test::quoted(dir.string()), 30);
+  const auto r = live_test::run_edsc(
+      "sim " + live_test::quoted(opener_eds) + " --address " + nowhere + " --inputs " + live_test::quoted(dir.string()),
+      30);
   std::filesystem::remove_all(dir);
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("edsc: error: --inputs " + dir.string() + ": is a directory, not a file of inputs"),

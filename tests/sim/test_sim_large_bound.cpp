@@ -31,7 +31,6 @@ using namespace std::chrono_literals;
 using raw::bytes;
 using raw::hex;
 
-
 const char* const path1 = "20 04 24 97 2C 96 2C 64";
 const char* const path2 = "20 04 24 97 2C 98 2C 65";
 const char* const path3 = "20 04 24 97 2C 99 2C 66";
@@ -44,7 +43,8 @@ class sim_large_bound : public ::testing::Test {
     ASSERT_TRUE(sim_.running()) << sim_.why;
   }
   // A connection of the bound device: key, `path`, the sizes given as sent.
-  static raw::forward_open_fields request(std::uint16_t serial, const char* path, bool large, unsigned ot, unsigned to) {
+  static raw::forward_open_fields request(std::uint16_t serial, const char* path, bool large, unsigned ot,
+                                          unsigned to) {
     raw::forward_open_fields f;
     f.serial = serial;
     f.to_id = 0x4C000000u + serial;
@@ -63,9 +63,8 @@ TEST_F(sim_large_bound, the_client_asks_511_by_forward_open_and_512_by_large_for
   const auto pcap = sim_.net->dir + "/bound.pcap";
   const auto dump = sim_.net->capture(pcap);
   ASSERT_GT(dump, 0);
-  const auto r = run_edsc("verify --live " + sim_.ip() + " " + quoted(sim_.net->dir + "/bound.eds") +
-                              " --connections --color never",
-                          60);
+  const auto r = run_edsc(
+      "verify --live " + sim_.ip() + " " + quoted(sim_.net->dir + "/bound.eds") + " --connections --color never", 60);
   EXPECT_EQ(r.status, 0) << r.output;
   for (const auto& [row, frames] : {std::pair<std::string, std::string>{"\nConnection1 ", "frames of 509 B"},
                                     {"\nConnection2 ", "frames of 510 B"},
@@ -150,8 +149,9 @@ TEST_F(sim_large_bound, frames_of_3000_bytes_go_both_ways) {
     ASSERT_TRUE(io->send_to(sim_.ip(), 2222, raw::ot_frame(ot_id, seq, true, bytes(3000, 0x5A))));
   const auto log = sim_.wait_for("\"event\":\"output\"");
   EXPECT_EQ(log.find("\"event\":\"wrong-size\""), std::string::npos) << log;
-  EXPECT_NE(log.find("{\"event\":\"output\",\"instance\":153,\"connection\":3,\"run\":true,\"sequence\":1,\"data\":\"5a5a"),
-            std::string::npos)
+  EXPECT_NE(
+      log.find("{\"event\":\"output\",\"instance\":153,\"connection\":3,\"run\":true,\"sequence\":1,\"data\":\"5a5a"),
+      std::string::npos)
       << log.substr(0, 2000);
   EXPECT_TRUE(s->ask(raw::forward_close(0x3000, hex(path3))));
 }

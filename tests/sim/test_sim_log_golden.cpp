@@ -43,7 +43,8 @@ TEST(sim_log_golden, a_scripted_session) {
   ASSERT_GT(pid, 0) << why;
   const auto probe = run_edsc("probe " + net->device_ip, 60);
   EXPECT_EQ(probe.status, 0) << probe.output;
-  const auto verify = run_edsc("verify --live " + net->device_ip + " " + quoted(eds) + " --connections --color never", 60);
+  const auto verify =
+      run_edsc("verify --live " + net->device_ip + " " + quoted(eds) + " --connections --color never", 60);
   EXPECT_EQ(verify.status, 0) << verify.output;
   net->stop(pid, SIGTERM);
   const auto log = live_test::shell("cat " + net->dir + "/sim.log").out;

@@ -34,7 +34,8 @@ class sim_device : public ::testing::Test {
 };
 
 TEST_F(sim_device, openers_eds_passes_verify_live_with_every_connection_opened) {
-  const auto r = run_edsc("verify --live " + net_->device_ip + " " + quoted(opener_eds) + " --connections --color never", 60);
+  const auto r =
+      run_edsc("verify --live " + net_->device_ip + " " + quoted(opener_eds) + " --connections --color never", 60);
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("0 errors"), std::string::npos) << r.output;
   for (const auto* c : {"\nConnection1 ", "\nConnection2 "}) {
@@ -49,7 +50,8 @@ TEST_F(sim_device, openers_eds_passes_verify_live_with_every_connection_opened) 
   net_->stop(sim_, SIGTERM);
   const auto out = log();
   EXPECT_NE(out.find("{\"event\":\"config\",\"instance\":151,\"by\":\"Forward_Open\""), std::string::npos) << out;
-  EXPECT_NE(out.find("{\"event\":\"output\",\"instance\":150,\"connection\":1,\"run\":false"), std::string::npos) << out;
+  EXPECT_NE(out.find("{\"event\":\"output\",\"instance\":150,\"connection\":1,\"run\":false"), std::string::npos)
+      << out;
   EXPECT_NE(out.find("{\"event\":\"stopped\""), std::string::npos) << out;
 }
 
@@ -77,7 +79,8 @@ TEST_F(sim_device, a_captured_session_decodes_in_tshark_without_malformed_packet
   EXPECT_GT(std::stoi(live_test::shell(base + "2>/dev/null | wc -l").out), 20);
   const auto malformed = live_test::shell(base + "-Y '_ws.malformed || _ws.expert.severity >= error' 2>/dev/null");
   EXPECT_EQ(malformed.out, "") << malformed.out;
-  const auto name = live_test::shell(base + "-Y enip.lir.name -T fields -E separator=, -e enip.lir.serial -e enip.lir.name 2>/dev/null");
+  const auto name = live_test::shell(
+      base + "-Y enip.lir.name -T fields -E separator=, -e enip.lir.serial -e enip.lir.name 2>/dev/null");
   EXPECT_NE(name.out.find("0x075bcd15,OpENer PC"), std::string::npos) << name.out;
 }
 

@@ -10,8 +10,8 @@
 #include "cip/message.hpp"
 #include "edit/analyze.hpp"
 #include "netns/live_support.hpp"
-#include "sim_eds.hpp"
 #include "sim/state.hpp"
+#include "sim_eds.hpp"
 
 namespace edsc::sim {
 namespace {
@@ -39,7 +39,8 @@ class sim_objects : public ::testing::Test {
   }
   cip::reply ask(std::uint8_t service, std::uint32_t cls, std::uint32_t instance, std::optional<std::uint32_t> attr,
                  const std::string& data = "") {
-    const auto r = handle_cip(s_, l_, cip::encode_request(service, cip::logical_path(cls, instance, attr), unhex(data)).value(), now_);
+    const auto r = handle_cip(
+        s_, l_, cip::encode_request(service, cip::logical_path(cls, instance, attr), unhex(data)).value(), now_);
     auto rep = cip::decode_reply(r, 0);
     EXPECT_TRUE(rep.ok());
     return rep.ok() ? rep.value() : cip::reply{};
@@ -67,7 +68,8 @@ TEST_F(sim_objects, parameter_class_attributes_count_the_params) {
   EXPECT_EQ(ask(0x0E, 0x0F, 0, 4).general, 0x14);
   EXPECT_EQ(ask(0x10, 0x0F, 0, 2, "07 00").general, 0x0E);
   // Every known class attribute is read-only (0x0E); an unknown one is unsupported (0x14).
-  for (const std::uint32_t attr : {1u, 2u, 3u, 8u, 9u, 10u}) EXPECT_EQ(ask(0x10, 0x0F, 0, attr, "00 00").general, 0x0E) << attr;
+  for (const std::uint32_t attr : {1u, 2u, 3u, 8u, 9u, 10u})
+    EXPECT_EQ(ask(0x10, 0x0F, 0, attr, "00 00").general, 0x0E) << attr;
   EXPECT_EQ(ask(0x10, 0x0F, 0, 4, "00 00").general, 0x14);
   // This EDS has no [Assembly]: the Assembly class's maximum instance is 0.
   EXPECT_EQ(hex(ask(0x0E, 0x04, 0, 2).data), "00 00");
@@ -84,7 +86,7 @@ TEST_F(sim_objects, a_parameters_attributes_are_the_eds_fields) {
   EXPECT_EQ(get(1, 10), "9C FF");             // -100
   EXPECT_EQ(get(1, 11), "64 00");             // 100
   EXPECT_EQ(get(1, 12), "FB FF");
-  EXPECT_EQ(get(1, 13), "01 00");  // scaling multiplier left out: 1
+  EXPECT_EQ(get(1, 13), "01 00");       // scaling multiplier left out: 1
   EXPECT_EQ(get(5, 1), "00 00 C0 3F");  // 1.5 as REAL
   EXPECT_EQ(get(6, 1), "03 61 62 63");  // "abc" as SHORT_STRING
   EXPECT_EQ(ask(0x0E, 0x0F, 1, 22).general, 0x14);
@@ -109,8 +111,8 @@ TEST_F(sim_objects, set_checks_size_range_and_sign_as_the_eds_says) {
   EXPECT_EQ(set(3, 1, "04"), 0x00);  // enumerated: a listed value
   EXPECT_EQ(set(3, 1, "05"), 0x09);  // in 0..9 but not listed
   EXPECT_EQ(set(3, 1, "0A"), 0x09);
-  EXPECT_EQ(set(5, 1, "00 00 00 40"), 0x00);  // 2.0 within REAL's range
-  EXPECT_EQ(set(6, 1, "01 41"), 0x0E);       // strings are served read-only
+  EXPECT_EQ(set(5, 1, "00 00 00 40"), 0x00);       // 2.0 within REAL's range
+  EXPECT_EQ(set(6, 1, "01 41"), 0x0E);             // strings are served read-only
   EXPECT_EQ(ask(0x0E, 0x0F, 4, 1).general, 0x16);  // no Param4
   EXPECT_EQ(ask(0x0E, 0x0F, 7, 1).general, 0x16);
   EXPECT_EQ(ask(0x4B, 0x0F, 1, std::nullopt).general, 0x08);
@@ -164,9 +166,9 @@ TEST_F(sim_file, transfers_go_in_order_and_a_lost_reply_is_sent_again) {
   EXPECT_EQ(ask(0x4F, 0x37, 0xC8, std::nullopt, "00").general, 0x0C);  // no upload initiated
   EXPECT_EQ(ask(0x4B, 0x37, 0xC8, std::nullopt, "").general, 0x13);
   EXPECT_EQ(hex(ask(0x4B, 0x37, 0xC8, std::nullopt, "02").data), "05 00 00 00 02");
-  EXPECT_EQ(hex(ask(0x0E, 0x37, 0xC8, 1).data), "03");  // upload initiated
+  EXPECT_EQ(hex(ask(0x0E, 0x37, 0xC8, 1).data), "03");                            // upload initiated
   EXPECT_EQ(hex(ask(0x4F, 0x37, 0xC8, std::nullopt, "00").data), "00 00 10 11");  // first
-  EXPECT_EQ(hex(ask(0x0E, 0x37, 0xC8, 1).data), "05");                           // in progress
+  EXPECT_EQ(hex(ask(0x0E, 0x37, 0xC8, 1).data), "05");                            // in progress
   EXPECT_EQ(hex(ask(0x4F, 0x37, 0xC8, std::nullopt, "00").data), "00 00 10 11");  // again
   EXPECT_EQ(ask(0x4F, 0x37, 0xC8, std::nullopt, "05").general, 0x20);             // out of order
   EXPECT_EQ(hex(ask(0x4F, 0x37, 0xC8, std::nullopt, "01").data), "01 01 12 13");  // middle
@@ -179,11 +181,15 @@ TEST_F(sim_file, transfers_go_in_order_and_a_lost_reply_is_sent_again) {
 // What a configuration tool does: SendRRData on a session, Initiate_Upload
 // with the largest transfer size, Upload_Transfer until the last packet.
 TEST_F(sim_file, an_upload_through_the_encapsulation_returns_the_file_byte_for_byte) {
-  const auto reg = handle_encap(s_, l_, cip::encode_encap(cip::command::register_session, 0, {}, cip::register_session_data()).value(), true, now_);
+  const auto reg = handle_encap(
+      s_, l_, cip::encode_encap(cip::command::register_session, 0, {}, cip::register_session_data()).value(), true,
+      now_);
   ASSERT_TRUE(reg.reply);
   auto send = [&](std::uint8_t service, const std::string& data) {
     const auto q = cip::encode_request(service, cip::logical_path(0x37, 0xC8), unhex(data)).value();
-    const auto out = handle_encap(s_, l_, cip::encode_encap(cip::command::send_rr_data, l_.session, {}, cip::send_rr_data(q, 5).value()).value(), true, now_);
+    const auto out = handle_encap(
+        s_, l_, cip::encode_encap(cip::command::send_rr_data, l_.session, {}, cip::send_rr_data(q, 5).value()).value(),
+        true, now_);
     EXPECT_TRUE(out.reply);
     auto item = cip::decode_send_rr_data(cip::byte_view(*out.reply).subspan(24), 24);
     EXPECT_TRUE(item.ok());
@@ -199,8 +205,10 @@ TEST_F(sim_file, an_upload_through_the_encapsulation_returns_the_file_byte_for_b
     const auto r = send(0x4F, hex(cip::bytes{static_cast<std::uint8_t>(n)}));
     ASSERT_EQ(r.general, 0);
     type = r.data[1];
-    if (n == 0) EXPECT_EQ(type, 0);  // the file is longer than one packet
-    else EXPECT_TRUE(type == 1 || type == 2) << int(type);
+    if (n == 0)
+      EXPECT_EQ(type, 0);  // the file is longer than one packet
+    else
+      EXPECT_TRUE(type == 1 || type == 2) << int(type);
     got.insert(got.end(), r.data.begin() + 2, r.data.end() - (type == 2 ? 2 : 0));
   }
   EXPECT_EQ(got, s_.dev.file.content);
@@ -236,7 +244,7 @@ TEST_F(sim_file, the_generic_services_answer_every_object_alike) {
     EXPECT_EQ(ask(0x0E, c.cls, 0, 1).general, 0x00);
     EXPECT_EQ(ask(0x0E, c.cls, 0, 7).general, 0x14);
     EXPECT_EQ(ask(0x10, c.cls, 0, 1, "00 00").general, c.class_set);
-    EXPECT_EQ(ask(0x01, c.cls, 0, std::nullopt).general, 0x08);  // Get_Attribute_All of the class
+    EXPECT_EQ(ask(0x01, c.cls, 0, std::nullopt).general, 0x08);         // Get_Attribute_All of the class
     EXPECT_EQ(ask(0x05, c.cls, c.instance, c.readable).general, 0x08);  // Reset: not served
   }
   // The input assembly's data is what the device produces: not settable, even at its size.

@@ -58,7 +58,8 @@ TEST_F(sim_ports, a_second_simulator_on_the_same_address_is_refused) {
   ASSERT_GT(first, 0) << why;
   const auto same = sim_in(*net_, quoted(opener_eds) + " --address " + net_->device_ip);
   EXPECT_EQ(same.status, 2) << same.out;
-  EXPECT_NE(same.out.find("edsc: error: TCP port 44818 on " + net_->device_ip + " is already in use"), std::string::npos)
+  EXPECT_NE(same.out.find("edsc: error: TCP port 44818 on " + net_->device_ip + " is already in use"),
+            std::string::npos)
       << same.out;
   const auto io = sim_in(*net_, quoted(opener_eds) + " --address " + net_->device_ip + " --port 44819");
   EXPECT_EQ(io.status, 2) << io.out;
@@ -69,7 +70,8 @@ TEST_F(sim_ports, a_second_simulator_on_the_same_address_is_refused) {
   EXPECT_EQ(any.status, 2) << any.out;
   EXPECT_NE(any.out.find("UDP port 2222 on 0.0.0.0 is already in use"), std::string::npos) << any.out;
   // The first still serves.
-  const auto r = run_edsc("verify --live " + net_->device_ip + " " + quoted(opener_eds) + " --connections --color never", 60);
+  const auto r =
+      run_edsc("verify --live " + net_->device_ip + " " + quoted(opener_eds) + " --connections --color never", 60);
   EXPECT_EQ(r.status, 0) << r.output;
 }
 
@@ -95,7 +97,8 @@ TEST_F(sim_ports, verify_live_stops_when_its_local_io_port_is_taken) {
   at.sin_port = htons(2222);
   ::inet_pton(AF_INET, net_->host_ip.c_str(), &at.sin_addr);
   ASSERT_EQ(::bind(other, reinterpret_cast<sockaddr*>(&at), sizeof at), 0);
-  const auto r = run_edsc("verify --live " + net_->device_ip + " " + quoted(opener_eds) + " --connections --color never", 60);
+  const auto r =
+      run_edsc("verify --live " + net_->device_ip + " " + quoted(opener_eds) + " --connections --color never", 60);
   ::close(other);
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("UDP port 2222 on " + net_->host_ip + " is already in use"), std::string::npos) << r.output;
@@ -111,7 +114,8 @@ TEST_F(sim_ports, verify_live_stops_when_its_local_io_port_is_taken) {
 // --port 0: the system picks the port; TCP and UDP encapsulation share the
 // one it picked, and the listening line reports it (never 0).
 TEST_F(sim_ports, port_0_reports_the_port_it_bound) {
-  const auto pid = net_->spawn({EDSC_BINARY, "sim", opener_eds, "--address", net_->device_ip, "--port", "0"}, "sim0.log");
+  const auto pid =
+      net_->spawn({EDSC_BINARY, "sim", opener_eds, "--address", net_->device_ip, "--port", "0"}, "sim0.log");
   ASSERT_GT(pid, 0);
   const auto log = log_once("sim0.log", "\"event\":\"listening\"");
   std::smatch m;
@@ -166,7 +170,10 @@ TEST_F(sim_ports, a_capture_decodes_cleanly_in_tshark) {
   ASSERT_GT(dump, 0);
   const auto cfg12 = net_->dir + "/cfg12.eds";
   ASSERT_EQ(live_test::shell("cp " + quoted(opener_eds) + " " + quoted(cfg12)).status, 0);
-  ASSERT_EQ(run_edsc("edit " + quoted(cfg12) + " --in-place --force --set 'Connection Manager.Connection1.target_config_size=12'").status, 0);
+  ASSERT_EQ(run_edsc("edit " + quoted(cfg12) +
+                     " --in-place --force --set 'Connection Manager.Connection1.target_config_size=12'")
+                .status,
+            0);
   EXPECT_EQ(run_edsc("probe " + net_->device_ip + " --udp --timeout 5").status, 0);
   EXPECT_EQ(run_edsc("verify --live " + net_->device_ip + " " + quoted(opener_eds) + " --connections", 60).status, 0);
   const auto refused = run_edsc("verify --live " + net_->device_ip + " " + quoted(cfg12) + " --connections", 60);

@@ -12,9 +12,9 @@
 
 #include "cip/encap.hpp"
 #include "cip/message.hpp"
+#include "connections/plan.hpp"
 #include "corpus_dirs.hpp"
 #include "edit/analyze.hpp"
-#include "connections/plan.hpp"
 #include "netns/live_support.hpp"
 #include "sim/server.hpp"
 #include "sim/state.hpp"
@@ -132,7 +132,8 @@ TEST_F(sim_rpi, a_parameters_limits_are_the_limits_forward_open_applies) {
   EXPECT_EQ(open(2, 500000, 500000), ok);
   EXPECT_EQ(open(2, 999, 1000), rpi_refused);
   EXPECT_EQ(open(2, 600000, 600000), rpi_refused) << "the EDS's default lies outside its own limits";
-  EXPECT_EQ(ask(s_, cip::encode_request(0x10, cip::logical_path(0x0F, 1, 1), unhex("C0 27 09 00")).value()).general, 0x09);
+  EXPECT_EQ(ask(s_, cip::encode_request(0x10, cip::logical_path(0x0F, 1, 1), unhex("C0 27 09 00")).value()).general,
+            0x09);
 }
 
 // A parameter that gives no limits: the Parameter object reports the
@@ -154,7 +155,7 @@ TEST_F(sim_rpi, an_rpi_parameter_without_limits_reports_the_default_limits) {
 // path "20 04 24 01 2C 64 2C 65".
 TEST(sim_rpi_corpus, hilschers_connection_without_rpi_takes_a_hand_worked_forward_open) {
   const auto a = sim_test::analyze_file(std::string(EDSC_CORPUS_DIR) +
-                                         "/Hilscher-North-America__EIP-FI-X90__EIS_V5_SIMPLE_CONFIG_DEMO.eds");
+                                        "/Hilscher-North-America__EIP-FI-X90__EIS_V5_SIMPLE_CONFIG_DEMO.eds");
   state s;
   s.dev = build_device(a->dev, 1);
   const auto request = unhex(
@@ -187,7 +188,8 @@ TEST(sim_rpi_corpus, every_connection_without_rpi_of_the_corpora_is_accepted) {
     bool counted = false;
     for (const auto& p : connections::plan_connections(a->dev)) {
       const auto& c = *p.conn;
-      if (c.ot_rpi.present() || c.to_rpi.present() || !c.decoded || !(c.tt.transport_classes & 0x2) || p.kind.type == model::app_type::listen_only)
+      if (c.ot_rpi.present() || c.to_rpi.present() || !c.decoded || !(c.tt.transport_classes & 0x2) ||
+          p.kind.type == model::app_type::listen_only)
         continue;
       SCOPED_TRACE(path.filename().string() + " Connection" + std::to_string(c.number));
       if (!counted) {
@@ -224,9 +226,8 @@ TEST(sim_rpi_network, a_connection_without_rpi_passes_verify_live) {
   const auto path = std::string(EDSC_CORPUS_DIR) + "/Hilscher-North-America__EIP-FI-X90__EIS_V5_SIMPLE_CONFIG_DEMO.eds";
   const auto pid = sim_test::start_sim(*net, path, why);
   ASSERT_GT(pid, 0) << why;
-  const auto r = sim_test::run_edsc("verify --live " + net->device_ip + " " + sim_test::quoted(path) +
-                                        " --connections --color never",
-                                    60);
+  const auto r = sim_test::run_edsc(
+      "verify --live " + net->device_ip + " " + sim_test::quoted(path) + " --connections --color never", 60);
   EXPECT_EQ(r.status, 0) << r.output;
   const auto at = r.output.find("\nConnection1 ");
   ASSERT_NE(at, std::string::npos) << r.output;

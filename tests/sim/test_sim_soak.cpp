@@ -35,15 +35,17 @@ struct soak_result {
   std::size_t received = 0, lost = 0, heard_from = 0;
   std::string late;
   void print() const {
-    std::printf("soak: %u/%u connections at %u us for %.0f s: %zu frames received of %.0f nominal, %zu lost, "
-                "%.0f produced (%s late), jitter %.0f us rms, %.0f us worst, CPU %.3f s = %.1f ms per 1000 frames\n",
-                opened, connections, rpi_us, seconds, received, nominal, lost, produced, late.c_str(), jitter_us,
-                worst_us, cpu_s, produced > 0 ? cpu_s * 1e6 / produced : 0.0);
+    std::printf(
+        "soak: %u/%u connections at %u us for %.0f s: %zu frames received of %.0f nominal, %zu lost, "
+        "%.0f produced (%s late), jitter %.0f us rms, %.0f us worst, CPU %.3f s = %.1f ms per 1000 frames\n",
+        opened, connections, rpi_us, seconds, received, nominal, lost, produced, late.c_str(), jitter_us, worst_us,
+        cpu_s, produced > 0 ? cpu_s * 1e6 / produced : 0.0);
   }
   // Every connection open, heard from, no gap in any CIP sequence count, and
   // at least `floor` of the nominal frames arrived.
   [[nodiscard]] bool held(double floor) const {
-    return opened == connections && heard_from == connections && lost == 0 && static_cast<double>(received) >= floor * nominal;
+    return opened == connections && heard_from == connections && lost == 0 &&
+           static_cast<double>(received) >= floor * nominal;
   }
 };
 
@@ -134,7 +136,9 @@ soak_result soak(unsigned connections, std::uint32_t rpi_us, int seconds) {
   net->stop(pid, SIGTERM);
   const auto log = live_test::shell("cat " + net->dir + "/sim.log").out;
   std::smatch m;
-  EXPECT_TRUE(std::regex_search(log, m, std::regex(R"("stopped","produced":([0-9]+),"late":([0-9]+),"open_connections":[0-9]+,"cpu_s":([0-9.]+))")))
+  EXPECT_TRUE(std::regex_search(
+      log, m,
+      std::regex(R"("stopped","produced":([0-9]+),"late":([0-9]+),"open_connections":[0-9]+,"cpu_s":([0-9.]+))")))
       << log;
   if (m.size() == 4) {
     out.produced = std::stod(m[1]);

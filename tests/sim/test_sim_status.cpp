@@ -37,7 +37,8 @@ class sim_status : public ::testing::Test {
   std::string status_word() {
     const auto attr = hex(ask(cip::encode_request(0x0E, cip::logical_path(1, 1, 5)).value()).data);
     link udp{0x0100007F, 0};
-    const auto out = handle_encap(s_, udp, cip::encode_encap(cip::command::list_identity, 0, {}, {}).value(), false, now_);
+    const auto out =
+        handle_encap(s_, udp, cip::encode_encap(cip::command::list_identity, 0, {}, {}).value(), false, now_);
     const auto ids = cip::decode_list_identity(cip::byte_view(*out.reply).subspan(24), 24);
     EXPECT_TRUE(ids.ok());
     cip::bytes word;
@@ -137,7 +138,8 @@ TEST_F(sim_status, every_refused_forward_open_is_logged_with_why) {
   ASSERT_EQ(s_.log.size(), 1u);
   EXPECT_NE(s_.log[0].find("\"extended\":\"0x012F\""), std::string::npos) << s_.log[0];
   EXPECT_NE(s_.log[0].find("no ConnectionN has the application path class 4, instance 151, connection point 150, "
-                              "connection point 101"), std::string::npos)
+                           "connection point 101"),
+            std::string::npos)
       << s_.log[0];
   s_.log.clear();
   fo = live_test::opener_connection1_request();

@@ -32,7 +32,9 @@ using raw::bytes;
 using raw::hex;
 
 enum class layer { encap, general, extended };
-const char* layer_name(layer l) { return l == layer::encap ? "encapsulation" : l == layer::general ? "general" : "extended"; }
+const char* layer_name(layer l) {
+  return l == layer::encap ? "encapsulation" : l == layer::general ? "general" : "extended";
+}
 
 // What the device answered at the layer a row is about; nullopt: no answer.
 using scenario = std::function<std::optional<unsigned>(const std::string& ip)>;
@@ -40,7 +42,7 @@ using scenario = std::function<std::optional<unsigned>(const std::string& ip)>;
 struct row {
   layer kind;
   unsigned code;
-  scenario produce;   // empty: never sent, for `reason`
+  scenario produce;  // empty: never sent, for `reason`
   const char* reason = "";
 };
 
@@ -126,8 +128,10 @@ std::optional<unsigned> out_of_connections(const std::string& ip) {
     f.path = hex("20 02 24 01");
     const auto r = s->ask(raw::forward_open(f));
     if (!r) return std::nullopt;
-    if (r->general == 0) opened.push_back(serial);
-    else refused = extended_of(r);
+    if (r->general == 0)
+      opened.push_back(serial);
+    else
+      refused = extended_of(r);
   }
   for (const auto serial : opened) (void)s->ask(raw::forward_close(serial, hex("20 02 24 01")));
   return refused;
@@ -161,7 +165,9 @@ std::vector<row> rows() {
       {L::encap, 0x0000, [](const std::string& ip) { return encap_status(ip, raw::register_session(), false); }},
       {L::encap, 0x0001,
        [](const std::string& ip) { return encap_status(ip, raw::encap(0x0099, 0xFFFFFFFF, {})); }},  // unknown command
-      {L::encap, 0x0002, {},
+      {L::encap,
+       0x0002,
+       {},
        "the simulator never runs out of memory for a request: a 65th TCP client is not accepted, and a "
        "Forward_Open beyond its 256 connections is refused with 0x01/0x0113"},
       {L::encap, 0x0003,
@@ -169,7 +175,9 @@ std::vector<row> rows() {
          return encap_status(ip, raw::encap(0x006F, 0xFFFFFFFF, hex("00 00 00 00 00 00 01 00 00 00 00 00")));
        }},
       {L::encap, 0x0064,
-       [](const std::string& ip) { return encap_status(ip, raw::send_rr_data(0x0BADF00D, hex("0E 03 20 01 24 01 30 01"))); }},
+       [](const std::string& ip) {
+         return encap_status(ip, raw::send_rr_data(0x0BADF00D, hex("0E 03 20 01 24 01 30 01")));
+       }},
       {L::encap, 0x0065,
        [](const std::string& ip) {  // RegisterSession with 6 bytes of data
          return encap_status(ip, raw::encap(0x0065, 0, hex("01 00 00 00 00 00")), false);
@@ -182,16 +190,20 @@ std::vector<row> rows() {
       // General status.
       {L::general, 0x00, general_for("0E 03 20 01 24 01 30 01")},
       {L::general, 0x01, [](const std::string& ip) { return general_of(ask(ip, raw::forward_close(0x7777, {}))); }},
-      {L::general, 0x02, {},
+      {L::general,
+       0x02,
+       {},
        "its limits are answered otherwise: a 65th TCP client is not accepted, a 257th connection gets 0x01/0x0113"},
       {L::general, 0x03, {}, "a value out of range is 0x09 (attribute) or 0x20 (service parameter) here"},
-      {L::general, 0x04, general_for("0E 02 52 00 20 01")},  // a network segment where the path should be
+      {L::general, 0x04, general_for("0E 02 52 00 20 01")},        // a network segment where the path should be
       {L::general, 0x05, general_for("0E 03 20 99 24 01 30 01")},  // class 0x99
       {L::general, 0x06, {}, unserved_services},
-      {L::general, 0x07, {},
+      {L::general,
+       0x07,
+       {},
        "a class 3 request on a connection that is not open is dropped without a reply, as a device drops a "
        "frame it has no connection for"},
-      {L::general, 0x08, general_for("33 02 20 06 24 01")},  // service 0x33 to the Connection Manager
+      {L::general, 0x08, general_for("33 02 20 06 24 01")},                    // service 0x33 to the Connection Manager
       {L::general, 0x09, general_for("10 03 20 0F 24 04 30 01 05 00 00 00")},  // Param4 (RPI) = 5 < its minimum
       {L::general, 0x0A, {}, unserved_services},
       {L::general, 0x0B, {}, unserved_services},
@@ -200,13 +212,16 @@ std::vector<row> rows() {
       {L::general, 0x0E, general_for("10 03 20 01 24 01 30 01 02 00")},  // Set Identity vendor
       {L::general, 0x0F, {}, "the simulator has no access control: every request any session sends is served"},
       {L::general, 0x10, {}, "the simulated device is always operational: it has no state that refuses a request"},
-      {L::general, 0x11, {},
+      {L::general,
+       0x11,
+       {},
        "the replies the simulator builds hold one attribute or one object; none exceeds what its answer carries "
        "for the EDS files it serves"},
       {L::general, 0x12, {}, unserved_services},
       {L::general, 0x13, general_for("10 03 20 04 24 96 30 03 01 02")},  // 2 bytes for Assem150's 32
       {L::general, 0x14, general_for("0E 03 20 01 24 01 30 63")},        // Identity attribute 0x63
-      {L::general, 0x15, [](const std::string& ip) {                    // 33 bytes for Assem150's 32
+      {L::general, 0x15,
+       [](const std::string& ip) {  // 33 bytes for Assem150's 32
          return general_of(ask(ip, raw::cat({hex("10 03 20 04 24 96 30 03"), bytes(33, 1)})));
        }},
       {L::general, 0x16, general_for("0E 03 20 0F 24 63 30 01")},  // Parameter instance 99
@@ -222,7 +237,9 @@ std::vector<row> rows() {
       {L::general, 0x20, [](const std::string& ip) { return upload_transfer_out_of_turn(ip, true); }},
       {L::general, 0x21, {}, unserved_services},
       {L::general, 0x22, {}, routing},
-      {L::general, 0x25, {},
+      {L::general,
+       0x25,
+       {},
        "a key that does not fit refuses a Forward_Open with 0x01 and 0x0114-0x0116 (as OpENer answers); a key "
        "in an explicit request's path is a path segment error, 0x04"},
       {L::general, 0x26, {}, "a path size that runs past the request is a path segment error here, 0x04"},
@@ -242,64 +259,90 @@ std::vector<row> rows() {
          return second_of_two(ip, raw::opener_connection1(0x5106), raw::opener_connection1(0x5107));
        }},
       {L::extended, 0x0107,
-       [](const std::string& ip) { return extended_of(ask(ip, raw::forward_close(0x7777, hex(raw::opener_owner_path)))); }},
-      {L::extended, 0x0108, {}, "network connection parameters are read field by field: a wrong field has its own status"},
-      {L::extended, 0x0109, connection1_with(0x5109, [](auto& f) { f.ot_params = raw::params16(38, raw::point_to_point, true); })},
+       [](const std::string& ip) {
+         return extended_of(ask(ip, raw::forward_close(0x7777, hex(raw::opener_owner_path))));
+       }},
+      {L::extended,
+       0x0108,
+       {},
+       "network connection parameters are read field by field: a wrong field has its own status"},
+      {L::extended, 0x0109,
+       connection1_with(0x5109, [](auto& f) { f.ot_params = raw::params16(38, raw::point_to_point, true); })},
       {L::extended, 0x0110, {}, "every connection point the EDS describes is served; none waits for configuration"},
       {L::extended, 0x0111, connection1_with(0x5111, [](auto& f) { f.ot_rpi = 1000; })},  // below Param4's 20000
-      {L::extended, 0x0112, {}, "an RPI outside the limits is 0x0111 here, as docs/sim.md says; no acceptable RPI is offered"},
+      {L::extended,
+       0x0112,
+       {},
+       "an RPI outside the limits is 0x0111 here, as docs/sim.md says; no acceptable RPI is offered"},
       {L::extended, 0x0113, out_of_connections},
-      {L::extended, 0x0114, connection1_with(0x5114, [](auto& f) {
-         f.path = with_path(raw::key(1, 12, 65002, 2, 3), raw::opener_owner_path);
-       })},
-      {L::extended, 0x0115, connection1_with(0x5115, [](auto& f) {
-         f.path = with_path(raw::key(1, 13, 65001, 2, 3), raw::opener_owner_path);
-       })},
-      {L::extended, 0x0116, connection1_with(0x5116, [](auto& f) {
-         f.path = with_path(raw::key(1, 12, 65001, 3, 3), raw::opener_owner_path);
-       })},
+      {L::extended, 0x0114,
+       connection1_with(0x5114,
+                        [](auto& f) { f.path = with_path(raw::key(1, 12, 65002, 2, 3), raw::opener_owner_path); })},
+      {L::extended, 0x0115,
+       connection1_with(0x5115,
+                        [](auto& f) { f.path = with_path(raw::key(1, 13, 65001, 2, 3), raw::opener_owner_path); })},
+      {L::extended, 0x0116,
+       connection1_with(0x5116,
+                        [](auto& f) { f.path = with_path(raw::key(1, 12, 65001, 3, 3), raw::opener_owner_path); })},
       {L::extended, 0x0117, {}, "a path that names no ConnectionN is 0x012F here, as OpENer answers"},
       {L::extended, 0x0118, {}, "a path that names no ConnectionN is 0x012F here, as OpENer answers"},
-      {L::extended, 0x0119, connection1_with(0x5119, [](auto& f) {  // listen-only (Connection3), no owner open
-         f.path = with_path(raw::opener_key(), raw::opener_listen_only_path);
-         f.ot_params = raw::params16(2);
-         f.to_params = raw::params16(34, raw::multicast);
-       })},
+      {L::extended, 0x0119,
+       connection1_with(0x5119,
+                        [](auto& f) {  // listen-only (Connection3), no owner open
+                          f.path = with_path(raw::opener_key(), raw::opener_listen_only_path);
+                          f.ot_params = raw::params16(2);
+                          f.to_params = raw::params16(34, raw::multicast);
+                        })},
       {L::extended, 0x011A, {}, "the simulator's one limit on connections is the Connection Manager's, 0x0113"},
       {L::extended, 0x011B, {}, "the simulator has no production inhibit time"},
       {L::extended, 0x011C, connection1_with(0x511C, [](auto& f) { f.transport = 0x02; })},  // class 2
-      {L::extended, 0x011D, {}, "class and trigger are judged together, 0x0103, as the EDS's transport field lists them"},
+      {L::extended,
+       0x011D,
+       {},
+       "class and trigger are judged together, 0x0103, as the EDS's transport field lists them"},
       {L::extended, 0x011E, {}, "the direction bit of the transport byte is not read"},
       {L::extended, 0x011F, {}, "a size kind the EDS does not allow is 0x0109, in either direction"},
       {L::extended, 0x0120, {}, "a size kind the EDS does not allow is 0x0109, in either direction"},
       {L::extended, 0x0121, {}, "priorities are not checked: every priority is accepted"},
       {L::extended, 0x0122, {}, "priorities are not checked: every priority is accepted"},
       {L::extended, 0x0123, connection1_with(0x5123, [](auto& f) { f.ot_params = raw::params16(38, raw::multicast); })},
-      {L::extended, 0x0124, connection1_with(0x5124, [](auto& f) {  // listen-only asked point-to-point
-         f.path = with_path(raw::opener_key(), raw::opener_listen_only_path);
-         f.ot_params = raw::params16(2);
-         f.to_params = raw::params16(34);
-       })},
+      {L::extended, 0x0124,
+       connection1_with(0x5124,
+                        [](auto& f) {  // listen-only asked point-to-point
+                          f.path = with_path(raw::opener_key(), raw::opener_listen_only_path);
+                          f.ot_params = raw::params16(2);
+                          f.to_params = raw::params16(34);
+                        })},
       {L::extended, 0x0125, {}, "the redundant owner bit is not read: every connection has one owner"},
-      {L::extended, 0x0126, connection1_with(0x5126, [](auto& f) {  // 12 bytes of configuration for Assem151's 10
-         f.path = raw::cat({f.path, hex("80 06"), bytes(12, 0)});
-       })},
+      {L::extended, 0x0126,
+       connection1_with(0x5126,
+                        [](auto& f) {  // 12 bytes of configuration for Assem151's 10
+                          f.path = raw::cat({f.path, hex("80 06"), bytes(12, 0)});
+                        })},
       {L::extended, 0x0127, connection1_with(0x5127, [](auto& f) { f.ot_params = raw::params16(39); })},
       {L::extended, 0x0128, connection1_with(0x5128, [](auto& f) { f.to_params = raw::params16(33); })},
-      {L::extended, 0x0129, {}, "configuration data of the wrong length is 0x0126 here; the configuration path is 0x012F"},
+      {L::extended,
+       0x0129,
+       {},
+       "configuration data of the wrong length is 0x0126 here; the configuration path is 0x012F"},
       {L::extended, 0x012A, {}, "a path that names no ConnectionN is 0x012F here, as OpENer answers"},
       {L::extended, 0x012B, {}, "a path that names no ConnectionN is 0x012F here, as OpENer answers"},
       {L::extended, 0x012C, {}, "a symbolic connection path names no ConnectionN the simulator serves: 0x012F"},
       {L::extended, 0x012D, {}, "a symbolic connection path names no ConnectionN the simulator serves: 0x012F"},
       {L::extended, 0x012E, {}, "a symbolic connection path names no ConnectionN the simulator serves: 0x012F"},
-      {L::extended, 0x012F, connection1_with(0x512F, [](auto& f) {
-         f.path = with_path(raw::opener_key(), "20 04 24 97 2C 96 2C 65");  // T->O 101: the EDS has 100
-       })},
+      {L::extended, 0x012F,
+       connection1_with(0x512F,
+                        [](auto& f) {
+                          f.path =
+                              with_path(raw::opener_key(), "20 04 24 97 2C 96 2C 65");  // T->O 101: the EDS has 100
+                        })},
       {L::extended, 0x0130, {}, "data formats are not checked beyond the sizes, 0x0127 and 0x0128"},
       {L::extended, 0x0131, {}, "data formats are not checked beyond the sizes, 0x0127 and 0x0128"},
       {L::extended, 0x0132, {}, "a null Forward_Open is held to the connection types the EDS lists: 0x0123"},
       {L::extended, 0x0133, {}, "every timeout multiplier is accepted (above 7 it counts as 7)"},
-      {L::extended, 0x0203, {},
+      {L::extended,
+       0x0203,
+       {},
        "a connection that times out is closed and logged (\"timeout\"); no request is answered with it, a later "
        "Forward_Close gets 0x0107"},
       {L::extended, 0x0204, {}, routing},
@@ -314,9 +357,11 @@ std::vector<row> rows() {
       {L::extended, 0x0306, {}, scheduled_networks},
       {L::extended, 0x0311, {}, routing},
       {L::extended, 0x0312, {}, routing},
-      {L::extended, 0x0315, connection1_with(0x5315, [](auto& f) {  // a network segment in the path
-         f.path = raw::cat({raw::opener_key(), hex("52 00"), hex(raw::opener_owner_path)});
-       })},
+      {L::extended, 0x0315,
+       connection1_with(0x5315,
+                        [](auto& f) {  // a network segment in the path
+                          f.path = raw::cat({raw::opener_key(), hex("52 00"), hex(raw::opener_owner_path)});
+                        })},
       {L::extended, 0x0316, {}, "Forward_Close finds the connection by its triple; the path it carries is not read"},
       {L::extended, 0x0317, {}, scheduled_networks},
       {L::extended, 0x0318, {}, routing},
@@ -375,9 +420,10 @@ std::string simulator_sources() {
 // the enum or the alias the simulator gives it (sim/objects.hpp: general,
 // sim/refusal.hpp: ext, sim/encap.cpp: status).
 bool named_by_simulator(const std::string& sources, layer kind, const std::string& symbol) {
-  const std::vector<std::string> scopes = kind == layer::encap     ? std::vector<std::string>{"encap_status", "status"}
-                                          : kind == layer::general ? std::vector<std::string>{"general_status", "general"}
-                                                                   : std::vector<std::string>{"extended_status", "ext"};
+  const std::vector<std::string> scopes = kind == layer::encap ? std::vector<std::string>{"encap_status", "status"}
+                                          : kind == layer::general
+                                              ? std::vector<std::string>{"general_status", "general"}
+                                              : std::vector<std::string>{"extended_status", "ext"};
   for (const auto& scope : scopes) {
     const std::regex use("\\b" + scope + "::" + symbol + "\\b");
     if (std::regex_search(sources, use)) return true;
@@ -401,8 +447,8 @@ TEST(sim_status_coverage, every_named_status_has_a_row_and_every_row_is_honest) 
   std::map<layer, std::set<unsigned>> have;
   for (const auto& r : rows()) {
     EXPECT_TRUE(have[r.kind].insert(r.code).second) << layer_name(r.kind) << " " << four_digits(r.code) << " twice";
-    EXPECT_TRUE(named.at(r.kind).count(r.code)) << layer_name(r.kind) << " " << four_digits(r.code)
-                                                << " has a row but is not in cip/codes.def";
+    EXPECT_TRUE(named.at(r.kind).count(r.code))
+        << layer_name(r.kind) << " " << four_digits(r.code) << " has a row but is not in cip/codes.def";
     EXPECT_NE(static_cast<bool>(r.produce), *r.reason != 0)
         << four_digits(r.code) << ": a row has a request or a reason, not both or neither";
   }

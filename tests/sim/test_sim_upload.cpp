@@ -39,10 +39,12 @@ class sim_tool : public ::testing::Test {
     std::ofstream(toml) << inputs;
     fifo_path_ = net_->dir + "/control";
     ASSERT_EQ(::mkfifo(fifo_path_.c_str(), 0600), 0);
-    fifo_ = ::open(fifo_path_.c_str(), O_RDWR | O_CLOEXEC);  // a writer already there: the simulator's open does not wait
+    fifo_ =
+        ::open(fifo_path_.c_str(), O_RDWR | O_CLOEXEC);  // a writer already there: the simulator's open does not wait
     ASSERT_GE(fifo_, 0);
-    const auto cmd = "exec " + live_test::quoted(EDSC_BINARY) + " sim " + live_test::quoted(opener_eds) + " --address " + net_->device_ip +
-                     " --inputs " + live_test::quoted(toml) + " --stdin < " + live_test::quoted(fifo_path_);
+    const auto cmd = "exec " + live_test::quoted(EDSC_BINARY) + " sim " + live_test::quoted(opener_eds) +
+                     " --address " + net_->device_ip + " --inputs " + live_test::quoted(toml) + " --stdin < " +
+                     live_test::quoted(fifo_path_);
     sim_ = net_->start_device({"sh", "-c", cmd}, "sim", why);
     ASSERT_GT(sim_, 0) << why;
     auto to = net::resolve(net_->device_ip, cip::enip_port);
@@ -127,7 +129,8 @@ TEST_F(sim_tool, parameters_inputs_and_control_lines_reach_the_device) {
   EXPECT_TRUE(control("set 100 01 02", "instance 100 holds 32 bytes, 2 given")) << log();
   EXPECT_TRUE(control("set Assem100 Input_Data=0x12", "\"ok\":true,\"instance\":100,\"data\":\"12")) << log();
   EXPECT_EQ(ask(0x0E, 0x04, 100, 3).data[0], 0x12);
-  EXPECT_TRUE(control("set 100 Input_Data=256", "does not fit (0..255)\",\"rule\":\"sim-inputs-value-range\"")) << log();
+  EXPECT_TRUE(control("set 100 Input_Data=256", "does not fit (0..255)\",\"rule\":\"sim-inputs-value-range\""))
+      << log();
 }
 
 }  // namespace

@@ -17,7 +17,8 @@ namespace {
 // sizes written in the connection).
 std::string io_eds(std::string_view assem100) {
   return small_eds(std::string(R"eds([Assembly]
-)eds") + std::string(assem100) + R"eds(
+)eds") + std::string(assem100) +
+                   R"eds(
 Assem150 = "Out","20 04 24 96 30 03",4,0x0000,,,32,;
 
 [Connection Manager]

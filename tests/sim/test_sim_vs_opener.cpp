@@ -52,7 +52,9 @@ std::string describe(const answer& a) {
 }
 void PrintTo(const answer& a, std::ostream* os) { *os << describe(a); }
 
-answer cip_answer(int general, std::vector<std::uint16_t> additional = {}) { return {true, 0, general, std::move(additional)}; }
+answer cip_answer(int general, std::vector<std::uint16_t> additional = {}) {
+  return {true, 0, general, std::move(additional)};
+}
 answer encap_answer(std::uint32_t status) { return {true, status, -1, {}}; }
 answer no_reply() { return {false, 0, -1, {}}; }
 
@@ -122,7 +124,9 @@ class raw_link {
     return a;
   }
   // A CIP request by SendRRData on this session.
-  answer cip(cip::byte_view request) { return exchange(cip::command::send_rr_data, handle, cip::send_rr_data(request, 5).value()); }
+  answer cip(cip::byte_view request) {
+    return exchange(cip::command::send_rr_data, handle, cip::send_rr_data(request, 5).value());
+  }
 
   std::uint32_t handle = 0;
 
@@ -178,17 +182,22 @@ struct request_case {
 };
 
 const request_case cases[] = {
-    {"forward_open_correct",
-     [](raw_link& l) { return forward_open(l, connection1(0x5101)); },
-     cip_answer(0), cip_answer(0)},
+    {"forward_open_correct", [](raw_link& l) { return forward_open(l, connection1(0x5101)); }, cip_answer(0),
+     cip_answer(0)},
     {"key_wrong_product_code",
-     [](raw_link& l) { return forward_open(l, with_key(0x5102, {1, 12, 65002, 2, 3, true})); },
+     [](raw_link& l) {
+       return forward_open(l, with_key(0x5102, {1, 12, 65002, 2, 3, true}));
+     },
      cip_answer(1, {0x0114}), cip_answer(1, {0x0114})},
     {"key_wrong_vendor",
-     [](raw_link& l) { return forward_open(l, with_key(0x5103, {2, 12, 65001, 2, 3, true})); },
+     [](raw_link& l) {
+       return forward_open(l, with_key(0x5103, {2, 12, 65001, 2, 3, true}));
+     },
      cip_answer(1, {0x0114}), cip_answer(1, {0x0114})},
     {"key_wrong_major_revision",
-     [](raw_link& l) { return forward_open(l, with_key(0x5104, {1, 12, 65001, 3, 3, true})); },
+     [](raw_link& l) {
+       return forward_open(l, with_key(0x5104, {1, 12, 65001, 3, 3, true}));
+     },
      cip_answer(1, {0x0116}), cip_answer(1, {0x0116})},
     {"ot_size_one_more",
      [](raw_link& l) {
@@ -230,7 +239,8 @@ const request_case cases[] = {
        fo.to.size = 32;
        return forward_open(l, fo);
      },
-     cip_answer(0), cip_answer(1, {0x011C}), "OpENer more lenient: it opens a class 2 connection where the EDS says class 1"},
+     cip_answer(0), cip_answer(1, {0x011C}),
+     "OpENer more lenient: it opens a class 2 connection where the EDS says class 1"},
     {"trigger_change_of_state",
      [](raw_link& l) {
        auto fo = connection1(0x5109);
@@ -263,14 +273,14 @@ const request_case cases[] = {
      [](raw_link& l) { return l.cip(cip::encode_request(0x33, cip::logical_path(6, 1)).value()); }, cip_answer(0x08),
      cip_answer(0x08)},
     {"get_attribute_unknown_class",
-     [](raw_link& l) { return l.cip(cip::encode_request(0x0E, cip::logical_path(0x99, 1, 1)).value()); }, cip_answer(0x05),
-     cip_answer(0x05)},
+     [](raw_link& l) { return l.cip(cip::encode_request(0x0E, cip::logical_path(0x99, 1, 1)).value()); },
+     cip_answer(0x05), cip_answer(0x05)},
     {"get_attribute_unknown_instance",
      [](raw_link& l) { return l.cip(cip::encode_request(0x0E, cip::logical_path(1, 2, 1)).value()); }, cip_answer(0x05),
      cip_answer(0x05)},
     {"get_attribute_unknown_attribute",
-     [](raw_link& l) { return l.cip(cip::encode_request(0x0E, cip::logical_path(1, 1, 0x63)).value()); }, cip_answer(0x14),
-     cip_answer(0x14)},
+     [](raw_link& l) { return l.cip(cip::encode_request(0x0E, cip::logical_path(1, 1, 0x63)).value()); },
+     cip_answer(0x14), cip_answer(0x14)},
     {"encap_register_session_length_6",
      [](raw_link& l) {
        auto data = cip::register_session_data();
@@ -278,7 +288,8 @@ const request_case cases[] = {
        return l.exchange(cip::command::register_session, 0, data);
      },
      encap_answer(0), encap_answer(0x0065),
-     "OpENer more lenient: it reads the 4 bytes it needs and registers; sim refuses a length RegisterSession does not have",
+     "OpENer more lenient: it reads the 4 bytes it needs and registers; sim refuses a length RegisterSession does not "
+     "have",
      false},
     {"encap_second_register_session",
      [](raw_link& l) { return l.exchange(cip::command::register_session, 0, cip::register_session_data()); },
@@ -289,9 +300,8 @@ const request_case cases[] = {
                          cip::send_rr_data(cip::encode_request(0x0E, cip::logical_path(1, 1, 1)).value(), 5).value());
      },
      encap_answer(0x0064), encap_answer(0x0064)},
-    {"encap_unknown_command",
-     [](raw_link& l) { return l.exchange(static_cast<cip::command>(0x0099), l.handle, {}); }, encap_answer(0x0001),
-     encap_answer(0x0001)},
+    {"encap_unknown_command", [](raw_link& l) { return l.exchange(static_cast<cip::command>(0x0099), l.handle, {}); },
+     encap_answer(0x0001), encap_answer(0x0001)},
 };
 
 class sim_vs_opener : public ::testing::Test {

@@ -24,7 +24,8 @@ using raw::bytes;
 using raw::hex;
 
 // Status, additional words and data, with `masked` bytes of the data as "..".
-std::string shown(const std::optional<raw::cip_reply>& r, const std::vector<std::pair<std::size_t, std::size_t>>& masked) {
+std::string shown(const std::optional<raw::cip_reply>& r,
+                  const std::vector<std::pair<std::size_t, std::size_t>>& masked) {
   if (!r) return "no reply";
   std::string s = "service " + raw::to_hex({static_cast<std::uint8_t>(r->service)}) + ", general " +
                   raw::to_hex({static_cast<std::uint8_t>(r->general)});
@@ -71,8 +72,9 @@ TEST_F(pair_of_devices, forward_open_replies_echo_the_same_ids_serials_and_inter
   // O->T every 20 ms, T->O every 50 ms: an API reported for the other direction shows.
   auto f = raw::opener_connection1(0x6001);
   f.to_rpi = 50000;
-  EXPECT_EQ(same(raw::forward_open(f), target_id),
-            "service d4, general 00, data .. .. .. .. 01 60 48 48 01 60 ff ff 78 56 34 12 20 4e 00 00 50 c3 00 00 00 00");
+  EXPECT_EQ(
+      same(raw::forward_open(f), target_id),
+      "service d4, general 00, data .. .. .. .. 01 60 48 48 01 60 ff ff 78 56 34 12 20 4e 00 00 50 c3 00 00 00 00");
   EXPECT_EQ(same(raw::forward_close(0x6001, hex(raw::opener_owner_path))),
             "service ce, general 00, data 01 60 ff ff 78 56 34 12 00 00");
   // The same connection by Large_Forward_Open, 32-bit parameters.
@@ -81,8 +83,9 @@ TEST_F(pair_of_devices, forward_open_replies_echo_the_same_ids_serials_and_inter
   f.ot_rpi = 40000;
   f.ot_params = raw::params32(38);
   f.to_params = raw::params32(34);
-  EXPECT_EQ(same(raw::forward_open(f), target_id),
-            "service db, general 00, data .. .. .. .. 02 60 48 48 02 60 ff ff 78 56 34 12 40 9c 00 00 20 4e 00 00 00 00");
+  EXPECT_EQ(
+      same(raw::forward_open(f), target_id),
+      "service db, general 00, data .. .. .. .. 02 60 48 48 02 60 ff ff 78 56 34 12 40 9c 00 00 20 4e 00 00 00 00");
   EXPECT_EQ(same(raw::forward_close(0x6002, hex(raw::opener_owner_path))),
             "service ce, general 00, data 02 60 ff ff 78 56 34 12 00 00");
 }

@@ -28,7 +28,8 @@ inline std::string new_eds(const std::string& name, const std::string& args, boo
   EXPECT_EQ(r.status, 0) << r.output;
   if (!rpi) return path;
   // `edsc new` leaves the RPIs to the user.
-  const auto e = run_edsc("edit " + quoted(path) + " --in-place --set 'Connection Manager.Connection1.ot_rpi=20000'"
+  const auto e = run_edsc("edit " + quoted(path) +
+                          " --in-place --set 'Connection Manager.Connection1.ot_rpi=20000'"
                           " --set 'Connection Manager.Connection1.to_rpi=20000'");
   EXPECT_EQ(e.status, 0) << e.output;
   return path;

@@ -40,10 +40,10 @@ inline device_build build_device(const std::string& name, const std::string& eds
   const auto start = std::chrono::steady_clock::now();
   const auto ccache = shell("command -v ccache").status == 0 ? " -DCMAKE_C_COMPILER_LAUNCHER=ccache" : "";
   // One job: the suite runs beside other builds on a shared machine.
-  const auto r = shell("cmake -S " + quoted(gen) + " -B " + quoted(build) + " -DOPENER_SOURCE_DIR=" +
-                       quoted(EDSC_OPENER_SOURCE_DIR) + " -DCMAKE_BUILD_TYPE=Release -DEDSC_OPENER_WERROR=ON" +
-                       ccache + " >" + quoted(build + ".log") + " 2>&1 && cmake --build " + quoted(build) +
-                       " -j1 >>" + quoted(build + ".log") + " 2>&1");
+  const auto r = shell("cmake -S " + quoted(gen) + " -B " + quoted(build) +
+                       " -DOPENER_SOURCE_DIR=" + quoted(EDSC_OPENER_SOURCE_DIR) +
+                       " -DCMAKE_BUILD_TYPE=Release -DEDSC_OPENER_WERROR=ON" + ccache + " >" + quoted(build + ".log") +
+                       " 2>&1 && cmake --build " + quoted(build) + " -j1 >>" + quoted(build + ".log") + " 2>&1");
   b.build_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   b.log += shell("tail -c 4000 " + quoted(build + ".log")).out;
   b.binary = build + "/opener/src/ports/POSIX/OpENer";

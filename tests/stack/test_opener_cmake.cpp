@@ -41,14 +41,15 @@ TEST_F(opener_stack, edsc_add_opener_stack_rebuilds_the_adapter_when_the_eds_cha
   const auto install = shell("cmake --install " + quoted(build_tree()) + " --prefix " + quoted(prefix) + " 2>&1");
   ASSERT_EQ(install.status, 0) << install.out;
 
-  const auto eds = new_eds("cmake", "--vendor 4244 --product-type 43 --product-code 78 --name 'cmake device' "
-                                    "--revision 1.1 --input-bytes 6 --output-bytes 4");
+  const auto eds = new_eds("cmake",
+                           "--vendor 4244 --product-type 43 --product-code 78 --name 'cmake device' "
+                           "--revision 1.1 --input-bytes 6 --output-bytes 4");
   const auto build = root / "build";
   const auto ccache = shell("command -v ccache").status == 0 ? " -DCMAKE_C_COMPILER_LAUNCHER=ccache" : "";
-  const auto configure = shell("cmake -S " + quoted(fs::path(EDSC_TESTS_DIR) / "stack" / "consumer") + " -B " +
-                               quoted(build) + " -DCMAKE_PREFIX_PATH=" + quoted(prefix) + " -DDEVICE_EDS=" +
-                               quoted(eds) + " -DDEVICE_OPENER_SOURCE_DIR=" + quoted(EDSC_OPENER_SOURCE_DIR) +
-                               " -DCMAKE_BUILD_TYPE=Release" + ccache + " 2>&1");
+  const auto configure =
+      shell("cmake -S " + quoted(fs::path(EDSC_TESTS_DIR) / "stack" / "consumer") + " -B " + quoted(build) +
+            " -DCMAKE_PREFIX_PATH=" + quoted(prefix) + " -DDEVICE_EDS=" + quoted(eds) + " -DDEVICE_OPENER_SOURCE_DIR=" +
+            quoted(EDSC_OPENER_SOURCE_DIR) + " -DCMAKE_BUILD_TYPE=Release" + ccache + " 2>&1");
   ASSERT_EQ(configure.status, 0) << configure.out;
   // One job: the suite runs beside other builds on a shared machine.
   const auto make = "cmake --build " + quoted(build) + " -j1 2>&1";
@@ -72,8 +73,9 @@ TEST_F(opener_stack, edsc_add_opener_stack_rebuilds_the_adapter_when_the_eds_cha
   EXPECT_EQ(fs::last_write_time(binary), binary_time);
 
   // The input assembly grows from 6 to 20 bytes; only `cmake --build` follows.
-  const auto e = run_edsc("edit " + quoted(eds) +
-                          " --in-place --set Assembly.Assem100.size=20 --set 'Connection Manager.Connection1.to_size=20'");
+  const auto e =
+      run_edsc("edit " + quoted(eds) +
+               " --in-place --set Assembly.Assem100.size=20 --set 'Connection Manager.Connection1.to_size=20'");
   ASSERT_EQ(e.status, 0) << e.output;
   // Coarse file times must not hide the edit from the build.
   fs::last_write_time(eds, binary_time + std::chrono::seconds(2));

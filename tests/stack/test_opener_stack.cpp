@@ -47,16 +47,18 @@ TEST_F(opener_stack, a_corpus_device_of_other_sizes_builds_a_device_that_verifie
 }
 
 TEST_F(opener_stack, an_eds_of_edsc_new_builds_and_follows_an_edited_input_size) {
-  const auto eds = new_eds("new", "--vendor 4242 --product-type 43 --product-code 77 --name 'edsc new device' "
-                                  "--revision 3.2 --input-bytes 6 --output-bytes 4");
+  const auto eds = new_eds("new",
+                           "--vendor 4242 --product-type 43 --product-code 77 --name 'edsc new device' "
+                           "--revision 3.2 --input-bytes 6 --output-bytes 4");
   auto out = build_run_verify("new", eds);
   if (out.empty()) return;
   EXPECT_TRUE(row_matches(out, "Connection1 ", "frames of 6 B")) << out;
   // The input assembly grows on a copy: regenerate, rebuild, verify again.
   const auto edited = (fs::path(stack_root()) / "new" / "edited.eds").string();
   fs::copy_file(eds, edited, fs::copy_options::overwrite_existing);
-  const auto e = run_edsc("edit " + quoted(edited) +
-                          " --in-place --set Assembly.Assem100.size=20 --set 'Connection Manager.Connection1.to_size=20'");
+  const auto e =
+      run_edsc("edit " + quoted(edited) +
+               " --in-place --set Assembly.Assem100.size=20 --set 'Connection Manager.Connection1.to_size=20'");
   ASSERT_EQ(e.status, 0) << e.output;
   out = build_run_verify("new", edited);
   if (out.empty()) return;
@@ -66,8 +68,9 @@ TEST_F(opener_stack, an_eds_of_edsc_new_builds_and_follows_an_edited_input_size)
 // An empty RPI field sets no limit: the device accepts the connection at the
 // RPI the scanner picks (as 48 files of the corpora write it).
 TEST_F(opener_stack, a_connection_whose_eds_leaves_the_rpi_empty_is_accepted) {
-  const auto eds = new_eds("no-rpi", "--vendor 4244 --product-type 12 --product-code 5 --name 'no RPI' "
-                                     "--input-bytes 4 --output-bytes 4",
+  const auto eds = new_eds("no-rpi",
+                           "--vendor 4244 --product-type 12 --product-code 5 --name 'no RPI' "
+                           "--input-bytes 4 --output-bytes 4",
                            false);
   const auto dump = run_edsc("dump " + quoted(eds)).output;
   ASSERT_NE(dump.find("\"ot_rpi\": null"), std::string::npos) << dump;
@@ -81,8 +84,9 @@ TEST_F(opener_stack, a_connection_whose_eds_leaves_the_rpi_empty_is_accepted) {
 // buffer than its default 512 bytes: the generated project raises it, and
 // the device serves O->T and T->O of different sizes.
 TEST_F(opener_stack, connections_over_511_bytes_open_with_large_forward_open) {
-  const auto eds = new_eds("large", "--vendor 4245 --product-type 12 --product-code 6 --name 'large frames' "
-                                    "--input-bytes 600 --output-bytes 520");
+  const auto eds = new_eds("large",
+                           "--vendor 4245 --product-type 12 --product-code 6 --name 'large frames' "
+                           "--input-bytes 600 --output-bytes 520");
   // A cache kept from an earlier build would hide a buffer left at 512.
   fs::remove(fs::path(stack_root()) / "large" / "build" / "CMakeCache.txt");
   const auto out = build_run_verify("large", eds);
@@ -98,8 +102,8 @@ TEST_F(opener_stack, a_hostile_name_is_escaped_all_the_way_to_the_identity_objec
   const auto eds = new_eds("hostile", R"(--vendor 4243 --product-type 7 --product-code 9 --name 'a"b*/c\\d??=é' )"
                                       "--input-bytes 2 --output-bytes 2");
   // A connection name that would end a C comment, with a backslash and UTF-8.
-  const auto e = run_edsc("edit " + quoted(eds) +
-                          R"( --in-place --set 'Connection Manager.Connection1.name="x */ y \\ z ü"')");
+  const auto e =
+      run_edsc("edit " + quoted(eds) + R"( --in-place --set 'Connection Manager.Connection1.name="x */ y \\ z ü"')");
   ASSERT_EQ(e.status, 0) << e.output;
   const auto out = build_run_verify("hostile", eds);
   if (out.empty()) return;

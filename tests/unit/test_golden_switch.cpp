@@ -15,12 +15,16 @@ class golden_env {
  public:
   explicit golden_env(const char* value) {
     if (const char* old = std::getenv("EDSC_UPDATE_GOLDEN")) old_ = old;
-    if (value) ::setenv("EDSC_UPDATE_GOLDEN", value, 1);
-    else ::unsetenv("EDSC_UPDATE_GOLDEN");
+    if (value)
+      ::setenv("EDSC_UPDATE_GOLDEN", value, 1);
+    else
+      ::unsetenv("EDSC_UPDATE_GOLDEN");
   }
   ~golden_env() {
-    if (old_) ::setenv("EDSC_UPDATE_GOLDEN", old_->c_str(), 1);
-    else ::unsetenv("EDSC_UPDATE_GOLDEN");
+    if (old_)
+      ::setenv("EDSC_UPDATE_GOLDEN", old_->c_str(), 1);
+    else
+      ::unsetenv("EDSC_UPDATE_GOLDEN");
   }
 
  private:

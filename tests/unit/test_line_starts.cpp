@@ -45,7 +45,8 @@ TEST(line_starts, mixed_terminators) {
 starts reference(const std::string& t) {
   starts s{0};
   for (std::size_t i = 0; i < t.size(); ++i)
-    if (t[i] == '\n' || (t[i] == '\r' && (i + 1 == t.size() || t[i + 1] != '\n'))) s.push_back(static_cast<std::uint32_t>(i + 1));
+    if (t[i] == '\n' || (t[i] == '\r' && (i + 1 == t.size() || t[i + 1] != '\n')))
+      s.push_back(static_cast<std::uint32_t>(i + 1));
   return s;
 }
 

@@ -32,8 +32,9 @@ struct temp_file {
 
 // An EDS file of about `size` bytes with one certain error (VendCode out of range).
 std::string eds_text(std::size_t size) {
-  std::string text = "[File]\nDescText = \"map\";\nCreateDate = 01-02-2024;\nCreateTime = 10:00:00;\nRevision = 1.1;\n"
-                     "[Device]\nVendCode = 70000;\nProdName = \"x\";\n";
+  std::string text =
+      "[File]\nDescText = \"map\";\nCreateDate = 01-02-2024;\nCreateTime = 10:00:00;\nRevision = 1.1;\n"
+      "[Device]\nVendCode = 70000;\nProdName = \"x\";\n";
   while (text.size() < size) text += "$ filler comment line that only makes the file longer\n";
   text.resize(size);
   return text;

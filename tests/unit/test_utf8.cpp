@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "cip/device_reply.hpp"
 #include "base/utf8.hpp"
+#include "cip/device_reply.hpp"
 
 namespace {
 
@@ -44,7 +44,10 @@ TEST(utf8, cuts_never_split_a_character) {
 }
 
 TEST(utf8, boundaries_look_at_the_bytes_around_only) {
-  const std::string s = "a\xC3\xA9" "b\xE2\x82\xAC" "c";  // a e-acute b euro c
+  const std::string s =
+      "a\xC3\xA9"
+      "b\xE2\x82\xAC"
+      "c";  // a e-acute b euro c
   EXPECT_EQ(utf8::boundary_before(s, 1), 1u);
   EXPECT_EQ(utf8::boundary_before(s, 2), 1u);  // inside the e-acute
   EXPECT_EQ(utf8::boundary_before(s, 3), 3u);

@@ -50,10 +50,11 @@ TEST(VerifyDecode, DuplicateMacCheckVendorIsALittleEndianWord) {
 // second byte, the type its top two (0 first, 1 middle, 2 last). The first
 // byte (0x80: fragmented, MAC field 0) must not be read as the counter.
 TEST(VerifyDecode, FragmentCountersComeFromTheSecondByte) {
-  const auto conv = decode(read_can_log("(0.1) can0 44C#000E010107\n"  // Get Identity product name
-                                        "(0.2) can0 44B#80008E0452696768\n"
-                                        "(0.3) can0 44B#80417453\n"
-                                        "(0.4) can0 44B#8082\n"));
+  const auto conv =
+      decode(read_can_log("(0.1) can0 44C#000E010107\n"  // Get Identity product name
+                          "(0.2) can0 44B#80008E0452696768\n"
+                          "(0.3) can0 44B#80417453\n"
+                          "(0.4) can0 44B#8082\n"));
   ASSERT_EQ(conv.frames.size(), 4u);
   EXPECT_EQ(conv.frames[1].meaning, "fragment 0 (first)");
   EXPECT_EQ(conv.frames[2].meaning, "fragment 1 (middle)");
@@ -67,13 +68,14 @@ TEST(VerifyDecode, FragmentCountersComeFromTheSecondByte) {
 // (0x4B) adds the choice bits of the request, Release (0x4C) removes them;
 // neither changes them before the slave answers with success.
 TEST(VerifyDecode, AllocationDecidesWhatMessageFifteenIs) {
-  const auto conv = decode(read_can_log("(0.1) can0 3C9#01\n"         // nothing allocated: poll
-                                        "(0.2) can0 44E#004B030111\n"  // allocate explicit + COS
-                                        "(0.3) can0 44B#00CB00\n"
-                                        "(0.4) can0 3C9#\n"            // COS acknowledge
-                                        "(0.5) can0 44C#004C030110\n"  // release COS
-                                        "(0.6) can0 44B#00CC\n"
-                                        "(0.7) can0 3C9#02\n"));       // explicit only: poll again
+  const auto conv =
+      decode(read_can_log("(0.1) can0 3C9#01\n"          // nothing allocated: poll
+                          "(0.2) can0 44E#004B030111\n"  // allocate explicit + COS
+                          "(0.3) can0 44B#00CB00\n"
+                          "(0.4) can0 3C9#\n"            // COS acknowledge
+                          "(0.5) can0 44C#004C030110\n"  // release COS
+                          "(0.6) can0 44B#00CC\n"
+                          "(0.7) can0 3C9#02\n"));  // explicit only: poll again
   ASSERT_EQ(conv.frames.size(), 7u);
   EXPECT_EQ(conv.frames[0].label, "G1 msg 15: poll response");
   EXPECT_EQ(conv.frames[3].label, "G1 msg 15: COS/cyclic acknowledge");

@@ -9,8 +9,8 @@
 
 #include "check/check_file.hpp"
 #include "synth_log.hpp"
-#include "verify/compare.hpp"
 #include "test_paths.hpp"
+#include "verify/compare.hpp"
 
 using namespace edsc::test;
 
@@ -115,13 +115,15 @@ TEST(Verify, ResponderWithWrongCodeAndSizeIsAMismatch) {
   write_text(capture, log);
 
   const auto ds = verify_text(diffuse, log);
-  EXPECT_EQ(ids(ds), (std::vector<std::string>{"verify-identity-mismatch", "verify-connection-size", "verify-io-length"}))
+  EXPECT_EQ(ids(ds),
+            (std::vector<std::string>{"verify-identity-mismatch", "verify-connection-size", "verify-io-length"}))
       << log;
   const auto run = verify(diffuse, capture);
   EXPECT_EQ(run.status, 1) << run.output;
   EXPECT_NE(run.output.find("product code 45 where the EDS says 44"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("produces 2 bytes on its COS connection where the EDS says 1 (Input1 Size at"),
-            std::string::npos) << run.output;
+            std::string::npos)
+      << run.output;
   EXPECT_NE(run.output.find("(and 1 more frames like it)"), std::string::npos) << run.output;
 }
 
@@ -135,8 +137,8 @@ TEST(Verify, ResponderWithWrongVendorRevisionAndName) {
   auto requests = rightsight_requests();
   for (const auto* r : {"0x44C 00 0E 01 01 07", "0x44C 80 C0 00", "0x44C 80 C1 00"}) requests.push_back(r);
   const auto ds = verify_text(diffuse, responder_log(dir, wrong, requests));
-  EXPECT_EQ(ids(ds), (std::vector<std::string>{"verify-identity-mismatch", "verify-identity-mismatch",
-                                               "verify-product-name"}));
+  EXPECT_EQ(ids(ds),
+            (std::vector<std::string>{"verify-identity-mismatch", "verify-identity-mismatch", "verify-product-name"}));
   ASSERT_EQ(ds.size(), 3u);
   EXPECT_NE(ds[0].message.find("vendor ID 2 where the EDS says 1"), std::string::npos) << ds[0].message;
   EXPECT_NE(ds[1].message.find("revision 2.4 where the EDS says 1.4"), std::string::npos) << ds[1].message;
@@ -144,12 +146,13 @@ TEST(Verify, ResponderWithWrongVendorRevisionAndName) {
 
 TEST(Verify, ConnectionsTheEdsDoesNotAllowAndTheReverse) {
   const std::string log =
-      "(1.0) can0 44C#000E050207\n"   // polled produced size
-      "(1.1) can0 44B#008E0100\n"     // answered: the EDS has no poll
-      "(1.2) can0 44C#000E050407\n"   // COS produced size
-      "(1.3) can0 44B#0094 16FF\n";   // object does not exist: the EDS has COS
-  EXPECT_EQ(ids(verify_text(diffuse, "(1.0) can0 44C#000E050207\n(1.1) can0 44B#008E0100\n"
-                                     "(1.2) can0 44C#000E050407\n(1.3) can0 44B#009416FF\n")),
+      "(1.0) can0 44C#000E050207\n"  // polled produced size
+      "(1.1) can0 44B#008E0100\n"    // answered: the EDS has no poll
+      "(1.2) can0 44C#000E050407\n"  // COS produced size
+      "(1.3) can0 44B#0094 16FF\n";  // object does not exist: the EDS has COS
+  EXPECT_EQ(ids(verify_text(diffuse,
+                            "(1.0) can0 44C#000E050207\n(1.1) can0 44B#008E0100\n"
+                            "(1.2) can0 44C#000E050407\n(1.3) can0 44B#009416FF\n")),
             (std::vector<std::string>{"verify-connection-not-in-eds", "verify-connection-missing"}));
   EXPECT_EQ(ids(verify_text(diffuse, log)).front(), "verify-connection-not-in-eds");
 }
@@ -158,15 +161,15 @@ TEST(Verify, MalformedLinesAreReportedWithTheirLineNumber) {
   const std::string log =
       "(1.0) can0 44C#000E010101\n"
       "(1.1) can0 44B#008E0100\n"
-      "(1.2) can0 44B#8E0\n"          // odd digit count
+      "(1.2) can0 44B#8E0\n"  // odd digit count
       "garbage\n"
       "(x) can0 44B#00\n"
       "(1.3) can0 44B#0102030405060708090A\n"
-      "(1.4) can0 1ABCDEF0#00\n"      // 29-bit: decodable as a line, not DeviceNet
+      "(1.4) can0 1ABCDEF0#00\n"  // 29-bit: decodable as a line, not DeviceNet
       "(1.5) can0 7F3#01\n";
   const auto ds = verify_text(diffuse, log);
-  std::vector<std::string> expected{"verify-log-line", "verify-log-line", "verify-log-line", "verify-log-line",
-                                    "verify-undecodable", "verify-undecodable"};
+  std::vector<std::string> expected{"verify-log-line", "verify-log-line",    "verify-log-line",
+                                    "verify-log-line", "verify-undecodable", "verify-undecodable"};
   EXPECT_EQ(ids(ds), expected);
   temp_dir dir("verify-bad");
   write_text(dir.path() / "bad.log", log);
@@ -224,7 +227,8 @@ TEST(Verify, DecodePrintsTheConversation) {
   const auto run = run_shell(edsc_command() + " verify --decode " + quoted(startup));
   EXPECT_EQ(run.status, 0) << run.output;
   EXPECT_NE(run.output.find("G2 msg 7: duplicate MAC ID check    MAC 9 is on line: vendor 1, serial 0x500AF52B"),
-            std::string::npos) << run.output;
+            std::string::npos)
+      << run.output;
   EXPECT_NE(run.output.find("error: object does not exist (0x16)"), std::string::npos) << run.output;
 }
 
@@ -312,8 +316,8 @@ TEST(Verify, IoLengthIsComparedUpToEightBytes) {
   };
   const std::string seven = "(1.0) can0 349#01020304050607\n";  // G1 msg 13 from MAC 9: COS data
   const auto ds = verify_text(eds("8"), seven);
-  const auto io = std::find_if(ds.begin(), ds.end(),
-                               [](const auto& d) { return edsc::rule_of(d.id).name == std::string("verify-io-length"); });
+  const auto io = std::find_if(
+      ds.begin(), ds.end(), [](const auto& d) { return edsc::rule_of(d.id).name == std::string("verify-io-length"); });
   ASSERT_NE(io, ds.end());
   EXPECT_NE(io->message.find("COS I/O frame from MAC 9 carries 7 bytes where the EDS says 8"), std::string::npos)
       << io->message;
