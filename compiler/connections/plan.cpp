@@ -126,6 +126,39 @@ std::optional<cip::electronic_key> key_from_device(const model::device& dev) {
   return k;
 }
 
+namespace {
+
+// The Forward_Open a scanner configured from the EDS sends for `p`: types,
+// priorities and sizes per direction, the trigger, the key, the path and
+// the configuration data.
+void fill_request(const model::device& dev, const emit::eip_connection_facts& f,
+                  const std::optional<cip::electronic_key>& key, connection_plan& p) {
+  const auto& c = *p.conn;
+  auto& fo = p.request;
+  fo.ot_rpi_us = p.ot_rpi_us;
+  fo.to_rpi_us = p.to_rpi_us;
+  fo.ot.type = pick_type(c.cp.ot, false);
+  fo.to.type = pick_type(c.cp.to, false);  // point-to-point where allowed: no multicast routing needed
+  fo.ot.priority = pick_priority(c.cp.ot);
+  fo.to.priority = pick_priority(c.cp.to);
+  fo.ot.variable = !c.cp.ot.fixed && c.cp.ot.variable;
+  fo.to.variable = !c.cp.to.fixed && c.cp.to.variable;
+  fo.ot.size = fo.ot.type == cip::conn_type::null ? 0 : network_size(f.output_size, p.ot_run_idle);
+  fo.to.size = fo.to.type == cip::conn_type::null ? 0 : network_size(f.input_size, p.to_run_idle);
+  fo.large = fo.ot.size > 511 || fo.to.size > 511;
+  const std::uint8_t trigger = c.tt.trigger_cyclic ? 0 : c.tt.trigger_cos ? 1 : 2;
+  fo.transport = static_cast<std::uint8_t>((trigger << 4) | 0x01);
+  if (key) cip::put_key(fo.path, *key);
+  cip::put_bytes(fo.path, p.app_path);
+  if (f.config_size > 0 && f.config_instance != 0)
+    if (auto seg = cip::put_data_segment(
+            fo.path, config_data(dev, emit::assembly_of(dev, c.target_config_format), f.config_size));
+        !seg && p.not_openable.empty())
+      p.not_openable = "its configuration data does not fit a Forward_Open: " + seg.error().what();
+}
+
+}  // namespace
+
 std::vector<connection_plan> plan_connections(const model::device& dev) {
   std::vector<emit::header_issue> issues;
   const auto facts = emit::collect_connections(dev, issues);
@@ -163,27 +196,7 @@ std::vector<connection_plan> plan_connections(const model::device& dev) {
     if (p.not_openable.empty())
       if (auto why = encode_path(dev, *path, p.app_path)) p.not_openable = *why;
 
-    auto& fo = p.request;
-    fo.ot_rpi_us = p.ot_rpi_us;
-    fo.to_rpi_us = p.to_rpi_us;
-    fo.ot.type = pick_type(c.cp.ot, false);
-    fo.to.type = pick_type(c.cp.to, false);  // point-to-point where allowed: no multicast routing needed
-    fo.ot.priority = pick_priority(c.cp.ot);
-    fo.to.priority = pick_priority(c.cp.to);
-    fo.ot.variable = !c.cp.ot.fixed && c.cp.ot.variable;
-    fo.to.variable = !c.cp.to.fixed && c.cp.to.variable;
-    fo.ot.size = fo.ot.type == cip::conn_type::null ? 0 : network_size(f.output_size, p.ot_run_idle);
-    fo.to.size = fo.to.type == cip::conn_type::null ? 0 : network_size(f.input_size, p.to_run_idle);
-    fo.large = fo.ot.size > 511 || fo.to.size > 511;
-    const std::uint8_t trigger = c.tt.trigger_cyclic ? 0 : c.tt.trigger_cos ? 1 : 2;
-    fo.transport = static_cast<std::uint8_t>((trigger << 4) | 0x01);
-    if (key) cip::put_key(fo.path, *key);
-    cip::put_bytes(fo.path, p.app_path);
-    if (f.config_size > 0 && f.config_instance != 0)
-      if (auto seg = cip::put_data_segment(
-              fo.path, config_data(dev, emit::assembly_of(dev, c.target_config_format), f.config_size));
-          !seg && p.not_openable.empty())
-        p.not_openable = "its configuration data does not fit a Forward_Open: " + seg.error().what();
+    fill_request(dev, f, key, p);
     out.push_back(std::move(p));
   }
   return out;

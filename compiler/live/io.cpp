@@ -75,6 +75,65 @@ void measure(int sock, const connection_plan& plan, const cip::forward_open_repl
         std::chrono::duration<double, std::micro>(*last - *first).count() / static_cast<double>(st.frames - 1);
 }
 
+// Forward_Open (or Large_Forward_Open) of `plan`; false, with `out` saying
+// why, when the connection was not opened.
+bool open_connection(client& s, const connection_plan& plan, std::uint16_t serial, connection_outcome& out) {
+  auto fo = plan.request;
+  fo.connection_serial = serial;
+  fo.originator_vendor = originator_vendor;
+  fo.originator_serial = originator_serial;
+  fo.ot_connection_id = 0;
+  fo.to_connection_id = 0x45440000u + serial;  // ours for T->O point-to-point
+  const auto service = fo.large ? cip::service::large_forward_open : cip::service::forward_open;
+  const auto request = cip::encode_forward_open(fo);
+  if (!request) {
+    out.failure = refused_to_encode("Forward_Open", request.error());
+    return false;
+  }
+  auto reply = s.request_raw(service, *request);
+  if (!reply) {
+    out.failure = reply.error();
+    return false;
+  }
+  if (reply->general != 0) {
+    out.general = reply->general;
+    out.additional = reply->additional;
+    return false;
+  }
+  auto granted = cip::decode_forward_open_ok(reply->data, 0);
+  if (!granted) {
+    out.failure = error{net::error_id::malformed, fmt::format("malformed Forward_Open reply: {}", granted.error().what),
+                        granted.error().what, granted.error().offset};
+    return false;
+  }
+  out.opened = true;
+  out.granted = granted.value();
+  return true;
+}
+
+// Forward_Close by the connection triad and path, as opened.
+void close_connection(client& s, const connection_plan& plan, std::uint16_t serial, connection_outcome& out) {
+  cip::forward_close_request fc;
+  fc.connection_serial = serial;
+  fc.originator_vendor = originator_vendor;
+  fc.originator_serial = originator_serial;
+  fc.path = plan.app_path;
+  const auto close_request = cip::encode_forward_close(fc);
+  if (!close_request) {
+    out.failure = refused_to_encode("Forward_Close", close_request.error());
+    return;
+  }
+  auto closed = s.request_raw(cip::service::forward_close, *close_request);
+  if (!closed) {
+    out.failure = closed.error();
+    out.failure->message = "Forward_Close: " + out.failure->message;
+    return;
+  }
+  if (closed->general != 0)
+    out.close_problem =
+        fmt::format("Forward_Close refused: {}", cip::describe_status(closed->general, closed->additional));
+}
+
 }  // namespace
 
 connection_outcome exercise_connection(client& s, const connection_plan& plan, std::uint16_t serial,
@@ -89,60 +148,11 @@ connection_outcome exercise_connection(client& s, const connection_plan& plan, s
     out.failure->message += " (class 1 I/O needs UDP port 2222 on this host)";
     return out;
   }
-
-  auto fo = plan.request;
-  fo.connection_serial = serial;
-  fo.originator_vendor = originator_vendor;
-  fo.originator_serial = originator_serial;
-  fo.ot_connection_id = 0;
-  fo.to_connection_id = 0x45440000u + serial;  // ours for T->O point-to-point
-  const auto service = fo.large ? cip::service::large_forward_open : cip::service::forward_open;
-  const auto request = cip::encode_forward_open(fo);
-  if (!request) {
-    out.failure = refused_to_encode("Forward_Open", request.error());
-    return out;
-  }
-  auto reply = s.request_raw(service, *request);
-  if (!reply) {
-    out.failure = reply.error();
-    return out;
-  }
-  const auto& rep = *reply;
-  if (rep.general != 0) {
-    out.general = rep.general;
-    out.additional = rep.additional;
-    return out;
-  }
-  auto granted = cip::decode_forward_open_ok(rep.data, 0);
-  if (!granted) {
-    out.failure = error{net::error_id::malformed, fmt::format("malformed Forward_Open reply: {}", granted.error().what),
-                        granted.error().what, granted.error().offset};
-    return out;
-  }
-  out.opened = true;
-  out.granted = granted.value();
+  if (!open_connection(s, plan, serial, out)) return out;
   measure(udp->get(), plan, out.granted, s.peer().addr, window, out.io);
   out.interrupted = net::interruption() != 0;
-
-  // Closed however the watch ended: by the connection triad and path, as opened.
-  cip::forward_close_request fc;
-  fc.connection_serial = serial;
-  fc.originator_vendor = originator_vendor;
-  fc.originator_serial = originator_serial;
-  fc.path = plan.app_path;
-  const auto close_request = cip::encode_forward_close(fc);
-  if (!close_request) {
-    out.failure = refused_to_encode("Forward_Close", close_request.error());
-    return out;
-  }
-  auto closed = s.request_raw(cip::service::forward_close, *close_request);
-  if (!closed) {
-    out.failure = closed.error();
-    out.failure->message = "Forward_Close: " + out.failure->message;
-    return out;
-  }
-  if (const auto& c = *closed; c.general != 0)
-    out.close_problem = fmt::format("Forward_Close refused: {}", cip::describe_status(c.general, c.additional));
+  // Closed however the watch ended.
+  close_connection(s, plan, serial, out);
   return out;
 }
 
