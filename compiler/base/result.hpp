@@ -5,6 +5,7 @@
 // fuzz build cannot compile <expected>; when it can, this becomes an alias.
 // It depends on the standard library alone, so every room may include it.
 #include <cassert>
+#include <optional>
 #include <type_traits>
 #include <utility>
 #include <variant>
@@ -85,22 +86,20 @@ class [[nodiscard]] result<void, E> {
   using error_type = E;
 
   result() = default;
-  result(E e) : e_(std::move(e)), failed_(true) {}  // NOLINT: implicit by design
+  result(E e) : e_(std::move(e)) {}  // NOLINT: implicit by design
   template <class F>
-  requires std::is_constructible_v<E, F> result(failure<F> f)
-      : e_(std::move(f.error)), failed_(true) {}  // NOLINT: implicit by design
+  requires std::is_constructible_v<E, F> result(failure<F> f) : e_(std::move(f.error)) {}  // NOLINT: implicit by design
 
-  [[nodiscard]] bool has_value() const { return !failed_; }
+  [[nodiscard]] bool has_value() const { return !e_.has_value(); }
   [[nodiscard]] bool ok() const { return has_value(); }
   explicit operator bool() const { return has_value(); }
   [[nodiscard]] const E& error() const& {
-    assert(failed_);
-    return e_;
+    assert(e_.has_value());
+    return *e_;
   }
 
  private:
-  E e_{};
-  bool failed_ = false;
+  std::optional<E> e_;  // the error; E need not be default-constructible
 };
 
 }  // namespace edsc

@@ -35,12 +35,12 @@ std::unique_ptr<analysis> analyze(std::unique_ptr<source_file> source, const che
 checked_file check_file(const std::string& path, const check_options& options) {
   // Mapped, not read: `check` is what runs over whole libraries.
   auto read = io::map_source(path);
-  if (auto* err = std::get_if<io::io_error>(&read)) {
+  if (!read) {
     checked_file out;
-    out.io_error = err->message;
+    out.io_error = read.error().message;
     return out;
   }
-  return check_source(std::move(std::get<std::unique_ptr<source_file>>(read)), options);
+  return check_source(std::move(read.value()), options);
 }
 
 checked_file check_source(std::unique_ptr<source_file> source, const check_options& options) {

@@ -27,7 +27,7 @@ diag_policy::diag_policy() : rules_(all_rules().size()) {
   }
 }
 
-std::optional<std::string> diag_policy::add_flag(std::string_view flag) {
+result<void, std::string> diag_policy::add_flag(std::string_view flag) {
   // The global forms set every rule they speak of, so that a later -Werror
   // overrides an earlier -Wno-error=ID and the other way round.
   if (flag == "error" || flag == "no-error") {
@@ -39,7 +39,7 @@ std::optional<std::string> diag_policy::add_flag(std::string_view flag) {
       else if (r.default_level == severity::warning)
         st.promote = to_error::yes;
     }
-    return std::nullopt;
+    return {};
   }
   bool enable = true;
   auto promote = to_error::unset;
@@ -56,7 +56,7 @@ std::optional<std::string> diag_policy::add_flag(std::string_view flag) {
   }
   const auto ids = rules_named(name);
   if (ids.empty()) {
-    return fmt::format("unknown diagnostic or group '{}' in -W{} (see `edsc rules`)", name, flag);
+    return fail(fmt::format("unknown diagnostic or group '{}' in -W{} (see `edsc rules`)", name, flag));
   }
   for (const auto id : ids) {
     const auto& info = rule_of(id);
@@ -65,12 +65,12 @@ std::optional<std::string> diag_policy::add_flag(std::string_view flag) {
       st.promote = promote;
       if (promote == to_error::yes) st.enabled = true;  // as -Werror=ID does in compilers
     } else if (!enable && protected_group(info.group)) {
-      return fmt::format("-W{}: {} errors cannot be disabled", flag, info.group);
+      return fail(fmt::format("-W{}: {} errors cannot be disabled", flag, info.group));
     } else {
       st.enabled = enable;
     }
   }
-  return std::nullopt;
+  return {};
 }
 
 bool diag_policy::enabled(diag_id id) const { return rules_[static_cast<std::size_t>(id)].enabled; }

@@ -4,6 +4,7 @@
 #include <string_view>
 #include <vector>
 
+#include "base/result.hpp"
 #include "diag/diagnostic.hpp"
 
 namespace edsc {
@@ -22,9 +23,9 @@ class diag_policy {
  public:
   diag_policy();
 
-  // Takes one flag without its leading "-W"; returns an error message for an
-  // unknown id or group, or a flag that may not be used.
-  [[nodiscard]] std::optional<std::string> add_flag(std::string_view flag);
+  // Takes one flag without its leading "-W"; refused with an error message
+  // for an unknown id or group, or a flag that may not be used.
+  [[nodiscard]] result<void, std::string> add_flag(std::string_view flag);
 
   // Drops disabled diagnostics and maps severities, in place.
   void apply(diagnostics& ds) const;

@@ -22,9 +22,10 @@ const char* extension(page_format f) { return f == page_format::html ? ".html" :
 
 // The page and what goes beside it, each written atomically.
 void write_page(const rendered_page& p, const fs::path& target, std::vector<std::string>& failures) {
-  if (auto err = io::write_output(target.string(), p.text)) failures.push_back(err->message);
+  if (auto w = io::write_output(target.string(), p.text); !w) failures.push_back(w.error().message);
   for (const auto& [name, content] : p.files)
-    if (auto err = io::write_output((target.parent_path() / name).string(), content)) failures.push_back(err->message);
+    if (auto w = io::write_output((target.parent_path() / name).string(), content); !w)
+      failures.push_back(w.error().message);
 }
 
 }  // namespace
@@ -34,14 +35,14 @@ rendered_page render_file(const std::string& path, page_format format, const std
   rendered_page out;
   out.entry.source = path;
   auto read = io::read_source(path);
-  if (auto* err = std::get_if<io::io_error>(&read)) {
+  if (!read) {
     out.entry.unreadable = true;
-    out.entry.problem = err->message;
+    out.entry.problem = read.error().message;
     out.entry.sum.file = fs::path(path).filename().string();
     return out;
   }
   try {
-    const auto a = analyze(std::move(std::get<std::unique_ptr<source_file>>(read)), check_options{});
+    const auto a = analyze(std::move(read.value()), check_options{});
     const auto s = build_sheet(*a);
     out.entry.sum = s.sum;
     if (format == page_format::html) {
@@ -123,7 +124,8 @@ site_result build_site(const std::vector<std::string>& files, const std::string&
   }
   for (auto& f : failures) result.failures.insert(result.failures.end(), f.begin(), f.end());
   const auto index = (fs::path(out_dir) / (format == page_format::html ? "index.html" : "index.md")).string();
-  if (auto err = io::write_output(index, render_index(result.entries, format))) result.failures.push_back(err->message);
+  if (auto w = io::write_output(index, render_index(result.entries, format)); !w)
+    result.failures.push_back(w.error().message);
   return result;
 }
 

@@ -79,8 +79,8 @@ class ordered_checker {
 
   const std::vector<std::string>& files_;
   checked_file check_stdin() {
-    if (auto* err = std::get_if<io::io_error>(&stdin_read_)) return checked_file{{}, err->message};
-    return check_source(std::move(std::get<std::unique_ptr<source_file>>(stdin_read_)), options_);
+    if (!stdin_read_) return checked_file{{}, stdin_read_.error().message};
+    return check_source(std::move(stdin_read_.value()), options_);
   }
 
   const check_options& options_;
@@ -104,8 +104,8 @@ int run_check(const check_cli& cli) {
   check_options options;
   options.networks = cli.networks;
   for (const auto& flag : cli.warning_flags) {
-    if (auto err = options.policy.add_flag(flag)) {
-      print_error(*err);
+    if (auto taken = options.policy.add_flag(flag); !taken) {
+      print_error(taken.error());
       return exit_failure;
     }
   }

@@ -25,8 +25,8 @@ int run_fix(const fix_options& opt) {
   if (const int rc = opt.dest.refuse_overwrite(); rc != exit_ok) return rc;
   check_options options;
   for (const auto& flag : opt.warning_flags) {
-    if (auto err = options.policy.add_flag(flag)) {
-      print_error(*err);
+    if (auto taken = options.policy.add_flag(flag); !taken) {
+      print_error(taken.error());
       return exit_failure;
     }
   }

@@ -70,9 +70,7 @@ int run_stack_opener(const header_cli& cli) {
     const auto path = (std::filesystem::path(cli.output) / f.name).string();
     // A file that already holds these bytes keeps its time: the build that
     // regenerates on every configure then rebuilds only what changed.
-    if (const auto old = io::read_source(path); std::holds_alternative<std::unique_ptr<source_file>>(old) &&
-                                                std::get<std::unique_ptr<source_file>>(old)->text() == f.text)
-      continue;
+    if (const auto old = io::read_source(path); old.ok() && old.value()->text() == f.text) continue;
     if (write_result(path, f.text) != exit_ok) return exit_failure;
   }
   return exit_ok;

@@ -53,8 +53,8 @@ int run_lsp(const lsp_cli& cli) {
   // Validate the command line's flags before speaking the protocol.
   diag_policy probe;
   for (const auto& flag : cli.warning_flags) {
-    if (auto err = probe.add_flag(flag)) {
-      print_error(*err);
+    if (auto taken = probe.add_flag(flag); !taken) {
+      print_error(taken.error());
       return exit_failure;
     }
   }

@@ -47,7 +47,7 @@ std::vector<library_match> match_library(const io::collected_inputs& inputs, con
   std::vector<library_match> out;
   for (const auto& path : inputs.files) {
     auto read = io::read_source(path);
-    auto* src = std::get_if<std::unique_ptr<source_file>>(&read);
+    auto* src = (read ? &read.value() : nullptr);
     if (src == nullptr) continue;
     const auto a = analyze(std::move(*src), check_options{});
     const auto& d = a->dev.identity;
@@ -111,9 +111,10 @@ std::variant<std::size_t, std::string> upload_eds(const probe_cli& cli, const ne
   if (!file) return "upload of the EDS from the device: " + file.error().message;
   const auto& bytes = *file;
   std::fflush(stdout);
-  if (auto e =
-          io::write_output(cli.upload_eds, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size())))
-    return e->message;
+  if (auto w =
+          io::write_output(cli.upload_eds, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+      !w)
+    return w.error().message;
   return bytes.size();
 }
 

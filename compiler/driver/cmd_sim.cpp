@@ -54,11 +54,11 @@ bool load_inputs(const std::string& path, sim::state& s) {
     return false;
   }
   auto read = io::read_source(path);
-  if (auto* err = std::get_if<io::io_error>(&read)) {
-    print_error("--inputs " + err->message);
+  if (!read) {
+    print_error("--inputs " + read.error().message);
     return false;
   }
-  const auto& src = *std::get<std::unique_ptr<source_file>>(read);
+  const auto& src = *read.value();
   const auto e = sim::load_inputs(s.dev, path, src.text());
   if (!e) return true;
   const auto at = e->line > 0 ? offset_of(src.text(), e->line, e->column) : 0;

@@ -36,11 +36,11 @@ struct verify_cli {
 
 std::unique_ptr<source_file> read_input(const std::string& path) {
   auto r = io::read_source(path);
-  if (auto* err = std::get_if<io::io_error>(&r)) {
-    print_error(err->message);
+  if (!r) {
+    print_error(r.error().message);
     return nullptr;
   }
-  return std::move(std::get<std::unique_ptr<source_file>>(r));
+  return std::move(r.value());
 }
 
 // The capture's frames; none at all in a file with lines is bad input (exit 2).
@@ -158,8 +158,8 @@ int run_verify(const verify_cli& cli, const CLI::App& cmd) {
   }
   check_options options;
   for (const auto& flag : cli.warning_flags) {
-    if (auto err = options.policy.add_flag(flag)) {
-      print_error(*err);
+    if (auto taken = options.policy.add_flag(flag); !taken) {
+      print_error(taken.error());
       return exit_failure;
     }
   }

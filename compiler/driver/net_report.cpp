@@ -9,8 +9,8 @@ namespace edsc::driver {
 
 bool apply_flags(const std::vector<std::string>& flags, check_options& options) {
   for (const auto& flag : flags) {
-    if (auto err = options.policy.add_flag(flag)) {
-      print_error(*err);
+    if (auto taken = options.policy.add_flag(flag); !taken) {
+      print_error(taken.error());
       return false;
     }
   }

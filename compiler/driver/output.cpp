@@ -67,8 +67,8 @@ int refuse_input_as_output(const std::string& output, const std::vector<std::str
                            std::string_view in_place) {
   io::input_set set;
   for (const auto& in : inputs) set.add(in);
-  if (auto err = set.refuse_as_output(output, in_place)) {
-    print_error(err->message);
+  if (auto allowed = set.refuse_as_output(output, in_place); !allowed) {
+    print_error(allowed.error().message);
     return exit_failure;
   }
   return exit_ok;
@@ -77,8 +77,8 @@ int refuse_input_as_output(const std::string& output, const std::vector<std::str
 int write_result(const std::string& output, std::string_view bytes) {
   // Buffered standard output first, so it cannot land after the direct write.
   std::fflush(stdout);
-  if (auto err = io::write_output(output, bytes)) {
-    print_error(err->message);
+  if (auto w = io::write_output(output, bytes); !w) {
+    print_error(w.error().message);
     return exit_failure;
   }
   return exit_ok;
@@ -94,11 +94,11 @@ bool report_not_text(const parse_result& parsed, const source_file& src) {
 
 std::unique_ptr<source_file> read_or_report(const std::string& path, const std::string& stdin_name) {
   auto read = io::is_stdin(path) ? io::read_stdin(stdin_name) : io::read_source(path);
-  if (auto* err = std::get_if<io::io_error>(&read)) {
-    print_error(err->message);
+  if (!read) {
+    print_error(read.error().message);
     return nullptr;
   }
-  return std::move(std::get<std::unique_ptr<source_file>>(read));
+  return std::move(read.value());
 }
 
 }  // namespace edsc::driver

@@ -43,7 +43,7 @@ std::string directory_of(const std::string& path) {
 // rename over the target; on failure the target is untouched and no
 // temporary file remains. Internal to the policy, which alone knows when a
 // path may be replaced (write_output below): nothing else can reach it.
-std::optional<io_error> write_atomically(const std::string& path, std::string_view bytes) {
+written write_atomically(const std::string& path, std::string_view bytes) {
   const std::string dir = directory_of(path);
   std::string tmpl = path + ".edsc-XXXXXX";
   std::vector<char> name(tmpl.begin(), tmpl.end());
@@ -86,11 +86,11 @@ std::optional<io_error> write_atomically(const std::string& path, std::string_vi
     ::fsync(dfd);
     ::close(dfd);
   }
-  return std::nullopt;
+  return {};
 }
 
-std::optional<io_error> write_fd(int fd, const std::string& path, std::string_view bytes) {
-  if (write_fully(fd, bytes)) return std::nullopt;
+written write_fd(int fd, const std::string& path, std::string_view bytes) {
+  if (write_fully(fd, bytes)) return {};
   return io_error{fmt::format("{}: cannot write: {}", path, std::strerror(errno))};
 }
 
@@ -124,18 +124,17 @@ namespace detail {
 // A character device or FIFO: opened without O_CREAT or O_TRUNC and written.
 // fstat after open makes sure it is still one, so a path swapped for a
 // regular file meanwhile is never written over from its start.
-std::optional<io_error> write_through(const std::string& path, std::string_view bytes, bool& not_a_stream) {
+written write_through(const std::string& path, std::string_view bytes) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
   if (fd < 0) return io_error{fmt::format("{}: cannot open for writing: {}", path, std::strerror(errno))};
   struct stat st {};
   if (::fstat(fd, &st) != 0 || !(S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode))) {
     ::close(fd);
-    not_a_stream = true;
-    return std::nullopt;
+    return io_error{fmt::format("{}: changed while being written; nothing written", path)};
   }
-  auto err = write_fd(fd, path, bytes);
-  if (::close(fd) != 0 && !err) err = io_error{fmt::format("{}: cannot close: {}", path, std::strerror(errno))};
-  return err;
+  auto done = write_fd(fd, path, bytes);
+  if (::close(fd) != 0 && done) return io_error{fmt::format("{}: cannot close: {}", path, std::strerror(errno))};
+  return done;
 }
 
 }  // namespace detail
@@ -156,16 +155,16 @@ std::optional<std::string> input_set::input_named_by(const std::string& path) co
   return std::nullopt;
 }
 
-std::optional<io_error> input_set::refuse_as_output(const std::string& output, std::string_view in_place) const {
+written input_set::refuse_as_output(const std::string& output, std::string_view in_place) const {
   const auto input = input_named_by(output);
-  if (!input) return std::nullopt;
+  if (!input) return {};
   const std::string same = *input == output ? "" : fmt::format(" ({})", *input);
   if (!in_place.empty())
     return io_error{fmt::format("{}: refusing to overwrite the input{}; use {} to edit it", output, same, in_place)};
   return io_error{fmt::format("{}: refusing to overwrite the input{}; name another output file", output, same)};
 }
 
-std::optional<io_error> write_output(const std::string& path, std::string_view bytes) {
+written write_output(const std::string& path, std::string_view bytes) {
   if (const auto fd = open_stream_name(path)) {
     if (::fcntl(*fd, F_GETFD) < 0) return io_error{fmt::format("{}: no such open stream", path)};
     return write_fd(*fd, path, bytes);
@@ -194,12 +193,7 @@ std::optional<io_error> write_output(const std::string& path, std::string_view b
     }
   }
   if (S_ISREG(st.st_mode)) return write_atomically(target, bytes);
-  if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)) {
-    bool not_a_stream = false;
-    auto err = detail::write_through(path, bytes, not_a_stream);
-    if (not_a_stream) return io_error{fmt::format("{}: changed while being written; nothing written", path)};
-    return err;
-  }
+  if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)) return detail::write_through(path, bytes);
   return io_error{fmt::format("{}: is {}; refusing to write over it", path, kind_word(st.st_mode))};
 }
 

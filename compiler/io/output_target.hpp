@@ -28,7 +28,7 @@ class input_set {
   [[nodiscard]] std::optional<std::string> input_named_by(const std::string& path) const;
   // A usage error when `output` is one of the inputs; `in_place` names the
   // command's option for rewriting its input, empty where it has none.
-  [[nodiscard]] std::optional<io_error> refuse_as_output(const std::string& output, std::string_view in_place) const;
+  [[nodiscard]] written refuse_as_output(const std::string& output, std::string_view in_place) const;
 
  private:
   struct file_id {
@@ -53,15 +53,14 @@ class input_set {
 //   a character device or FIFO (or a link to one)  opened and written through
 //   a directory, socket, block device or dangling link  refused
 // On failure a file at `path` is as it was.
-[[nodiscard]] std::optional<io_error> write_output(const std::string& path, std::string_view bytes);
+[[nodiscard]] written write_output(const std::string& path, std::string_view bytes);
 
 namespace detail {
 // The written-through case of write_output: `path` was a character device or
 // FIFO when looked at; when what open() finds is no longer one, nothing is
-// written and `not_a_stream` is set. Named here so the race it guards
-// against can be tested without winning it.
-[[nodiscard]] std::optional<io_error> write_through(const std::string& path, std::string_view bytes,
-                                                    bool& not_a_stream);
+// written and the error says the path changed. Named here so the race it
+// guards against can be tested without winning it.
+[[nodiscard]] written write_through(const std::string& path, std::string_view bytes);
 }  // namespace detail
 
 }  // namespace edsc::io

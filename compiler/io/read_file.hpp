@@ -3,8 +3,8 @@
 #include <memory>
 #include <string>
 #include <string_view>
-#include <variant>
 
+#include "base/result.hpp"
 #include "source/source_file.hpp"
 
 namespace edsc::io {
@@ -17,7 +17,9 @@ struct io_error {
   std::string message;  // complete sentence naming the path
 };
 
-using read_result = std::variant<std::unique_ptr<source_file>, io_error>;
+using read_result = result<std::unique_ptr<source_file>, io_error>;
+// A write that yields nothing but may fail.
+using written = result<void, io_error>;
 
 [[nodiscard]] read_result read_source(const std::string& path, std::uint64_t max_bytes = default_max_input_bytes);
 

@@ -67,7 +67,7 @@ void session::set_warnings(const json& flags) {
   check_options fresh;
   fresh.networks = options.networks;
   for (const auto& f : startup.warning_flags) {
-    if (auto err = fresh.policy.add_flag(f)) show_message(2, "edsc: -W" + f + ": " + *err);
+    if (auto taken = fresh.policy.add_flag(f); !taken) show_message(2, "edsc: -W" + f + ": " + taken.error());
   }
   if (flags.is_array()) {
     for (const auto& f : flags) {
@@ -76,8 +76,8 @@ void session::set_warnings(const json& flags) {
         show_message(2, "edsc: warning setting '" + flag + "' is not a -W flag; ignored");
         continue;
       }
-      if (auto err = fresh.policy.add_flag(std::string_view(flag).substr(2))) {
-        show_message(2, "edsc: " + flag + ": " + *err);
+      if (auto taken = fresh.policy.add_flag(std::string_view(flag).substr(2)); !taken) {
+        show_message(2, "edsc: " + flag + ": " + taken.error());
       }
     }
   } else if (!flags.is_null()) {

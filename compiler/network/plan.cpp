@@ -125,11 +125,11 @@ class checker {
     if (auto it = offers_.find(path); it != offers_.end()) return it->second;
     auto& o = offers_[path];
     auto r = read_ ? read_(path) : io::read_source(path);
-    if (auto* err = std::get_if<io::io_error>(&r)) {
-      o.io_error = err->message;
+    if (!r) {
+      o.io_error = r.error().message;
       return o;
     }
-    o.a = analyze(std::move(std::get<std::unique_ptr<source_file>>(r)), options_);
+    o.a = analyze(std::move(r.value()), options_);
     if (!o.a->diags.empty()) {
       o.report = out_.eds_reports.size();
       out_.eds_reports.push_back(

@@ -38,7 +38,7 @@ std::string message(const json& j) { return j.dump(-1, ' ', false, json::error_h
 
 void typing(benchmark::State& state, const std::string& path) {
   auto r = edsc::io::read_source(path);
-  auto* src = std::get_if<std::unique_ptr<edsc::source_file>>(&r);
+  auto* src = (r ? &r.value() : nullptr);
   if (path.empty() || !src) {
     state.SkipWithError(("no input " + path).c_str());
     return;

@@ -59,12 +59,12 @@ const std::vector<std::unique_ptr<prepared_file>>& prepared(const input_set& set
   current = set.name;
   for (const auto& path : set.paths) {
     auto read = io::read_source(path);
-    if (auto* err = std::get_if<io::io_error>(&read)) {
-      std::fprintf(stderr, "edsc_bench: %s\n", err->message.c_str());
+    if (!read) {
+      std::fprintf(stderr, "edsc_bench: %s\n", read.error().message.c_str());
       std::exit(2);
     }
     auto f = std::make_unique<prepared_file>();
-    f->src = std::move(std::get<std::unique_ptr<source_file>>(read));
+    f->src = std::move(read.value());
     f->parsed = parse(*f->src);
     f->dev = lower(f->parsed.tree, f->lower_diags);
     files.push_back(std::move(f));

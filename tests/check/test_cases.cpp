@@ -36,7 +36,7 @@ edsc::check_options options_for(const std::string& path) {
     if (at == std::string::npos) continue;
     std::istringstream words(line.substr(at + 13));
     for (std::string w; words >> w;) {
-      if (auto err = options.policy.add_flag(w)) ADD_FAILURE() << path << ": " << *err;
+      if (auto taken = options.policy.add_flag(w); !taken) ADD_FAILURE() << path << ": " << taken.error();
     }
   }
   return options;

@@ -132,8 +132,8 @@ TEST(CorpusHeaders, CompileStrictlyAndAgreeWithTheModel) {
   std::vector<job> jobs;
   for (std::size_t i = 0; i < files.size(); ++i) {
     auto read = io::read_source(files[i].string());
-    ASSERT_TRUE(std::holds_alternative<std::unique_ptr<source_file>>(read)) << files[i];
-    const auto& src = *std::get<std::unique_ptr<source_file>>(read);
+    ASSERT_TRUE(read.ok()) << files[i];
+    const auto& src = *read.value();
     const auto parsed = parse(src);
     diagnostics d;
     const auto dev = lower(parsed.tree, d);

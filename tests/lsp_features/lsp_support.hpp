@@ -21,8 +21,8 @@ inline std::unique_ptr<analysis> analyze_text(std::string text) {
 // A file of the corpus or the project; null (and a failure) when unreadable.
 inline std::unique_ptr<analysis> analyze_path(const std::string& path) {
   auto r = io::read_source(path);
-  if (auto* src = std::get_if<std::unique_ptr<source_file>>(&r)) return analyze(std::move(*src), check_options{});
-  ADD_FAILURE() << std::get<io::io_error>(r).message;
+  if (auto* src = (r ? &r.value() : nullptr)) return analyze(std::move(*src), check_options{});
+  ADD_FAILURE() << r.error().message;
   return nullptr;
 }
 
