@@ -9,8 +9,8 @@
 #include "driver/destination.hpp"
 #include "driver/output.hpp"
 #include "edit/analyze.hpp"
+#include "edit/edit_error.hpp"
 #include "edit/editor.hpp"
-#include "edit/locate.hpp"
 #include "io/read_file.hpp"
 
 namespace edsc::driver {
@@ -27,15 +27,16 @@ struct edit_options {
   std::vector<std::pair<op_kind, std::string>> ops;  // in command-line order
 };
 
-void apply_op(edit::editor& ed, op_kind k, const std::string& v) {
+edit::edited apply_op(edit::editor& ed, op_kind k, const std::string& v) {
   switch (k) {
-    case op_kind::set: ed.set(v); break;
-    case op_kind::add_entry: ed.add_entry(v); break;
-    case op_kind::remove_entry: ed.remove_entry(v); break;
-    case op_kind::add_section: ed.add_section(v); break;
-    case op_kind::remove_section: ed.remove_section(v); break;
-    case op_kind::resize: ed.resize(v); break;
+    case op_kind::set: return ed.set(v);
+    case op_kind::add_entry: return ed.add_entry(v);
+    case op_kind::remove_entry: return ed.remove_entry(v);
+    case op_kind::add_section: return ed.add_section(v);
+    case op_kind::remove_section: return ed.remove_section(v);
+    case op_kind::resize: return ed.resize(v);
   }
+  return {};
 }
 
 // Findings of `after` that `before` did not have (compared by rule and
@@ -72,11 +73,11 @@ int run_edit(const edit_options& opt) {
   }
 
   edit::editor ed(src.path(), std::string(src.text()));
-  try {
-    for (const auto& [kind, value] : opt.ops) apply_op(ed, kind, value);
-  } catch (const edit::edit_error& e) {
-    print_error(e.what());
-    return exit_failure;
+  for (const auto& [kind, value] : opt.ops) {
+    if (auto done = apply_op(ed, kind, value); !done) {
+      print_error(done.error().what());
+      return exit_failure;
+    }
   }
   report.clear();
   for (const auto& line : ed.log()) report += line + "\n";

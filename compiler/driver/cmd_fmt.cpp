@@ -40,10 +40,9 @@ int run_fmt(const fmt_options& opt) {
   }
   edit::format_options options;
   options.eol = opt.eol == "crlf" ? "\r\n" : opt.eol == "lf" ? "\n" : "";
-  std::string why;
-  const auto out = edit::format(a->tree, options, why);
+  const auto out = edit::format(a->tree, options);
   if (!out) {
-    print_error(fmt::format("{}: not formatted: {}", src.path(), why));
+    print_error(fmt::format("{}: not formatted: {}", src.path(), out.error().why));
     return exit_findings;
   }
   // Layout only: a formatted file that means something else is a bug, and

@@ -11,7 +11,7 @@
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
 #include "edit/analyze.hpp"
-#include "edit/locate.hpp"
+#include "edit/edit_error.hpp"
 #include "edit/new_device.hpp"
 
 namespace edsc::driver {
@@ -58,37 +58,40 @@ int run_new(new_options opt) {
     return exit_failure;
   }
   if (!opt.from.empty() && refuse_input_as_output(opt.output, {opt.from}) != exit_ok) return exit_failure;
-  try {
-    if (!opt.from.empty()) {
-      std::ifstream in(opt.from, std::ios::binary);
-      if (!in) {
-        print_error(fmt::format("{}: cannot read the device description", opt.from));
-        return exit_failure;
-      }
-      std::stringstream ss;
-      ss << in.rdbuf();
-      // The file is a template: whatever the command line says wins, so a
-      // build can pin the date or one file serve a family of products.
-      auto spec = edit::spec_from_json(ss.str(), opt.given_keys);
-      for (const auto& copy : opt.given) copy(spec, opt.spec);
-      opt.spec = std::move(spec);
+  if (!opt.from.empty()) {
+    std::ifstream in(opt.from, std::ios::binary);
+    if (!in) {
+      print_error(fmt::format("{}: cannot read the device description", opt.from));
+      return exit_failure;
     }
-    const auto text = edit::make_eds(opt.spec, opt.eol == "crlf" ? "\r\n" : "\n");
-    // Whatever was asked for, the result must check clean before it is written.
-    const auto a = edit::analyze(opt.output.empty() ? "<new>" : opt.output, text);
-    std::string report;
-    for (const auto& d : a->diags)
-      render_text(*a->source, d, text_style{use_color(color_mode::auto_detect, stderr)}, report);
-    write_all(stderr, report);
-    if (a->errors() > 0 && !opt.force) {
-      print_error("the new file would have the errors above; nothing written (--force writes anyway)");
-      return exit_findings;
+    std::stringstream ss;
+    ss << in.rdbuf();
+    // The file is a template: whatever the command line says wins, so a
+    // build can pin the date or one file serve a family of products.
+    auto spec = edit::spec_from_json(ss.str(), opt.given_keys);
+    if (!spec) {
+      print_error(spec.error().what());
+      return exit_failure;
     }
-    return write_result(opt.output.empty() ? std::string("-") : opt.output, text);
-  } catch (const edit::edit_error& e) {
-    print_error(e.what());
+    for (const auto& copy : opt.given) copy(*spec, opt.spec);
+    opt.spec = std::move(spec.value());
+  }
+  const auto text = edit::make_eds(opt.spec, opt.eol == "crlf" ? "\r\n" : "\n");
+  if (!text) {
+    print_error(text.error().what());
     return exit_failure;
   }
+  // Whatever was asked for, the result must check clean before it is written.
+  const auto a = edit::analyze(opt.output.empty() ? "<new>" : opt.output, *text);
+  std::string report;
+  for (const auto& d : a->diags)
+    render_text(*a->source, d, text_style{use_color(color_mode::auto_detect, stderr)}, report);
+  write_all(stderr, report);
+  if (a->errors() > 0 && !opt.force) {
+    print_error("the new file would have the errors above; nothing written (--force writes anyway)");
+    return exit_findings;
+  }
+  return write_result(opt.output.empty() ? std::string("-") : opt.output, *text);
 }
 
 }  // namespace

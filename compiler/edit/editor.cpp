@@ -148,7 +148,7 @@ replacement editor::keep_comment_column(span where, std::string value) const {
   return {{where.begin, b1}, std::move(value)};
 }
 
-void editor::set(std::string_view assignment) {
+void editor::do_set(std::string_view assignment) {
   const auto [lhs, rhs] = split_assignment(assignment, "Section.Keyword[.field]=value, e.g. Device.MajRev=2");
   std::uint32_t index = 0;
   const auto a = resolve_field(tree_, lhs, index);
@@ -168,7 +168,7 @@ void editor::set(std::string_view assignment) {
   commit({field_change(a.entry, index, std::move(value))});
 }
 
-void editor::add_entry(std::string_view assignment) {
+void editor::do_add_entry(std::string_view assignment) {
   const auto [lhs, rhs] =
       split_assignment(assignment, "Section.Keyword=fields, e.g. IO_Info.Output1=1, 0, 0x0001, \"Out\"");
   const auto a = resolve_entry(tree_, lhs, true);
@@ -199,7 +199,7 @@ void editor::add_entry(std::string_view assignment) {
   commit({{{at, at}, insert_entry_text(a.section, keyword, rhs)}});
 }
 
-void editor::remove_entry(std::string_view path) {
+void editor::do_remove_entry(std::string_view path) {
   const auto a = resolve_entry(tree_, path);
   const auto& e = tree_.entries[a.entry];
   span r = e.where;
@@ -218,7 +218,7 @@ void editor::remove_entry(std::string_view path) {
   commit({{r, ""}});
 }
 
-void editor::add_section(std::string_view name) {
+void editor::do_add_section(std::string_view name) {
   if (!valid_section_name(name))
     throw edit_error(fmt::format("'{}' is not a section name (letters, digits, single spaces and _ . / \\ -)", name));
   if (find_section(tree_, name) != cst::npos) throw edit_error(fmt::format("the file already has [{}]", name));
@@ -229,7 +229,7 @@ void editor::add_section(std::string_view name) {
   commit({new_section(canonical, "")});
 }
 
-void editor::remove_section(std::string_view name) {
+void editor::do_remove_section(std::string_view name) {
   const auto si = require_section(tree_, name);
   const auto& s = tree_.sections[si];
   auto begin = starts_line(text_, s.header.begin) ? line_begin(text_, s.header.begin) : s.header.begin;
@@ -256,6 +256,25 @@ void editor::remove_section(std::string_view name) {
   }
   log_.push_back(fmt::format("remove section [{}] ({} entries)", tree_.text(s.name), s.entries_count));
   commit({{{begin, end}, ""}});
+}
+
+edited editor::set(std::string_view assignment) {
+  return as_edit_result([&] { do_set(assignment); });
+}
+edited editor::add_entry(std::string_view assignment) {
+  return as_edit_result([&] { do_add_entry(assignment); });
+}
+edited editor::remove_entry(std::string_view path) {
+  return as_edit_result([&] { do_remove_entry(path); });
+}
+edited editor::add_section(std::string_view name) {
+  return as_edit_result([&] { do_add_section(name); });
+}
+edited editor::remove_section(std::string_view name) {
+  return as_edit_result([&] { do_remove_section(name); });
+}
+edited editor::resize(std::string_view spec) {
+  return as_edit_result([&] { do_resize(spec); });
 }
 
 }  // namespace edsc::edit

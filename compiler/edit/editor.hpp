@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "cst/cst.hpp"
+#include "edit/edit_error.hpp"
 #include "edit/splice.hpp"
 #include "source/source_file.hpp"
 
@@ -13,22 +14,23 @@ namespace edsc::edit {
 // Targeted changes on the lossless tree. Each operation parses the current
 // bytes, computes byte-range replacements and applies them, so every byte
 // outside the edited fields stays as it was. Inserted lines use the file's
-// own line ending and the indentation of their neighbours. Operations throw
-// edit_error (nothing changed) when an address or a value is wrong.
+// own line ending and the indentation of their neighbours. An operation is
+// refused with an edit_error (nothing changed) when an address or a value is
+// wrong.
 class editor {
  public:
   editor(std::string path, std::string text);
 
   // `Section.Keyword[.field]=value`; field by schema name or 1-based number.
-  void set(std::string_view assignment);
+  [[nodiscard]] edited set(std::string_view assignment);
   // `Section.Keyword=field, field, ...` at the end of an existing section.
-  void add_entry(std::string_view assignment);
-  void remove_entry(std::string_view path);
+  [[nodiscard]] edited add_entry(std::string_view assignment);
+  [[nodiscard]] edited remove_entry(std::string_view path);
   // An empty section; [Device Classification] goes after [Device], others at the end.
-  void add_section(std::string_view name);
-  void remove_section(std::string_view name);
+  [[nodiscard]] edited add_section(std::string_view name);
+  [[nodiscard]] edited remove_section(std::string_view name);
   // DeviceNet I/O resizing: `Input1=3` or `Output2=4:20` (size[:significant bits]).
-  void resize(std::string_view spec);
+  [[nodiscard]] edited resize(std::string_view spec);
 
   [[nodiscard]] const std::string& text() const { return text_; }
   [[nodiscard]] std::string_view eol() const { return eol_; }
@@ -36,6 +38,13 @@ class editor {
   [[nodiscard]] const std::vector<std::string>& log() const { return log_; }
 
  private:
+  // The operations above, throwing edit_error.
+  void do_set(std::string_view assignment);
+  void do_add_entry(std::string_view assignment);
+  void do_remove_entry(std::string_view path);
+  void do_add_section(std::string_view name);
+  void do_remove_section(std::string_view name);
+  void do_resize(std::string_view spec);
   void reparse();
   void commit(std::vector<replacement> changes);
   // Where a new line belongs after the last entry of `section` (or its header).

@@ -95,19 +95,12 @@ void put_notes(std::string& out, const std::vector<note>& notes, std::string_vie
 
 }  // namespace
 
-std::optional<std::string> format(const cst::tree& t, const format_options& options, std::string& why) {
+result<std::string, not_formatted> format(const cst::tree& t, const format_options& options) {
   const auto src = t.source->text();
   const std::string eol = options.eol.empty() ? std::string(dominant_eol(src)) : options.eol;
-  if (t.preamble_entries > 0) {
-    why = "entries stand before the first section header";
-    return std::nullopt;
-  }
-  for (const auto& tok : t.tokens) {
-    if (tok.kind == cst::token_kind::skipped) {
-      why = "the file has syntax errors";
-      return std::nullopt;
-    }
-  }
+  if (t.preamble_entries > 0) return fail(not_formatted{"entries stand before the first section header"});
+  for (const auto& tok : t.tokens)
+    if (tok.kind == cst::token_kind::skipped) return fail(not_formatted{"the file has syntax errors"});
   const auto first_section =
       t.sections.empty() ? static_cast<std::uint32_t>(t.tokens.size()) : t.sections[0].first_token;
   const auto preamble = scan(t, 0, first_section, false);

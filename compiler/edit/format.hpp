@@ -1,8 +1,8 @@
 #pragma once
-#include <optional>
 #include <string>
 #include <string_view>
 
+#include "base/result.hpp"
 #include "cst/cst.hpp"
 
 namespace edsc::edit {
@@ -28,9 +28,14 @@ inline constexpr std::size_t field_indent = 16;
 inline constexpr std::size_t comment_column = 48;  // 0-based
 inline constexpr std::size_t line_width = 80;
 
-// The formatted file, or nullopt with `why` when the tree cannot be laid out
-// safely (syntax errors, entries before the first section).
-[[nodiscard]] std::optional<std::string> format(const cst::tree& t, const format_options& options, std::string& why);
+// Why a tree cannot be laid out safely (syntax errors, entries before the
+// first section): a clause that follows "not formatted: ".
+struct not_formatted {
+  std::string why;
+};
+
+// The formatted file, or why it cannot be formatted.
+[[nodiscard]] result<std::string, not_formatted> format(const cst::tree& t, const format_options& options);
 
 namespace detail {
 // `text` then the comment at the comment column (or two blanks further on).

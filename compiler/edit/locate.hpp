@@ -1,19 +1,13 @@
 #pragma once
 #include <cstdint>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 
 #include "cst/cst.hpp"
+#include "edit/edit_error.hpp"
 #include "schema/schema.hpp"
 
 namespace edsc::edit {
-
-// A request that cannot be carried out: bad address, bad value, a missing
-// entry. The message names the valid choices; nothing has been written.
-struct edit_error : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 // Section of the tree with that name (case-insensitive), or cst::npos.
 [[nodiscard]] std::uint32_t find_section(const cst::tree& t, std::string_view name);

@@ -93,9 +93,7 @@ void ethernetip_io(const device_spec& s, std::string& out) {
   out += fmt::format("TSpec1 = TxRx, {}, 1000;\n", std::max(s.input, s.output));
 }
 
-}  // namespace
-
-std::string make_eds(const device_spec& spec, const std::string& eol) {
+std::string eds_text(const device_spec& spec, const std::string& eol) {
   auto s = spec;
   if (s.name.empty()) throw edit_error("--name is empty; a device needs a product name");
   if (s.vendor > 0xFFFF || s.product_type > 0xFFFF || s.product_code > 0xFFFF)
@@ -138,10 +136,15 @@ std::string make_eds(const device_spec& spec, const std::string& eol) {
   const auto parsed = parse(src);
   if (!parsed.diags.empty())
     throw edit_error(fmt::format("internal: generated text does not parse: {}", parsed.diags.front().message));
-  std::string why;
-  auto formatted = format(parsed.tree, format_options{eol}, why);
-  if (!formatted) throw edit_error("internal: " + why);
+  auto formatted = format(parsed.tree, format_options{eol});
+  if (!formatted) throw edit_error("internal: " + formatted.error().why);
   return *formatted;
+}
+
+}  // namespace
+
+edit_result<std::string> make_eds(const device_spec& spec, const std::string& eol) {
+  return as_edit_result([&] { return eds_text(spec, eol); });
 }
 
 }  // namespace edsc::edit

@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "edit/edit_error.hpp"
+
 namespace edsc::edit {
 
 // What `edsc new` needs to know about a device (docs/authoring.md documents
@@ -32,11 +34,11 @@ struct device_spec {
 // Reads a spec from JSON text (unknown keys are an error, so typos show).
 // A required key may be missing when `given_elsewhere` names it (the
 // command line gives it).
-[[nodiscard]] device_spec spec_from_json(const std::string& json_text,
-                                         const std::vector<std::string>& given_elsewhere = {});
+[[nodiscard]] edit_result<device_spec> spec_from_json(const std::string& json_text,
+                                                      const std::vector<std::string>& given_elsewhere = {});
 
-// The complete EDS, laid out as `edsc fmt` would. Throws edit_error for a
-// spec that cannot describe a device (names the offending key).
-[[nodiscard]] std::string make_eds(const device_spec& spec, const std::string& eol = "\n");
+// The complete EDS, laid out as `edsc fmt` would; refused for a spec that
+// cannot describe a device (the error names the offending key).
+[[nodiscard]] edit_result<std::string> make_eds(const device_spec& spec, const std::string& eol = "\n");
 
 }  // namespace edsc::edit

@@ -27,9 +27,7 @@ std::string option_of(std::string key) {
   return key;
 }
 
-}  // namespace
-
-device_spec spec_from_json(const std::string& json_text, const std::vector<std::string>& given_elsewhere) {
+device_spec read_spec(const std::string& json_text, const std::vector<std::string>& given_elsewhere) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(json_text);
@@ -77,6 +75,12 @@ device_spec spec_from_json(const std::string& json_text, const std::vector<std::
   take(j, "date", s.date);
   take(j, "time", s.time);
   return s;
+}
+
+}  // namespace
+
+edit_result<device_spec> spec_from_json(const std::string& json_text, const std::vector<std::string>& given_elsewhere) {
+  return as_edit_result([&] { return read_spec(json_text, given_elsewhere); });
 }
 
 }  // namespace edsc::edit

@@ -71,7 +71,7 @@ std::pair<std::uint32_t, std::string> adjust_bits(std::uint64_t old_size, std::u
 
 }  // namespace
 
-void editor::resize(std::string_view spec) {
+void editor::do_resize(std::string_view spec) {
   const auto r = parse_spec(spec);
   const auto io = find_section(tree_, "IO_Info");
   if (io == cst::npos) throw edit_error("--resize needs an [IO_Info] section (DeviceNet I/O); the file has none");

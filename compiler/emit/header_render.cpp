@@ -162,12 +162,12 @@ header_result generate_header(const model::device& dev, const source_file& src, 
   }
   const auto facts = collect_facts(dev, src, r.issues);
   if (r.has_error()) return r;
-  std::optional<std::string> error;
-  const auto templates = load_templates(opt.template_dir, error);
-  if (error) {
-    r.failure = std::move(error);
+  const auto loaded = load_templates(opt.template_dir);
+  if (!loaded) {
+    r.failure = loaded.error().message;
     return r;
   }
+  const auto& templates = loaded.value();
   const auto main = templates.find("header.h.mustache");
   if (main == templates.end()) {
     r.failure = "the template set has no header.h.mustache";

@@ -6,15 +6,14 @@
 
 namespace edsc::emit {
 
-template_set load_templates(const std::string& dir, std::optional<std::string>& error) {
+result<template_set, templates_unreadable> load_templates(const std::string& dir) {
   template_set set;
   for (std::size_t i = 0; i < embedded_template_count; ++i)
     set.emplace(embedded_templates[i].name, embedded_templates[i].text);
   if (dir.empty()) return set;
   std::error_code ec;
   if (!std::filesystem::is_directory(dir, ec)) {
-    error = "template directory '" + dir + "' does not exist";
-    return set;
+    return fail(templates_unreadable{"template directory '" + dir + "' does not exist"});
   }
   // Only the names edsc knows are read: a stray file cannot change the output.
   for (auto& [name, text] : set) {
@@ -23,10 +22,7 @@ template_set load_templates(const std::string& dir, std::optional<std::string>& 
     std::ifstream in(path, std::ios::binary);
     std::ostringstream s;
     s << in.rdbuf();
-    if (!in) {
-      error = "cannot read template '" + path.string() + "'";
-      return set;
-    }
+    if (!in) return fail(templates_unreadable{"cannot read template '" + path.string() + "'"});
     text = s.str();
   }
   return set;

@@ -1,8 +1,9 @@
 #pragma once
 #include <cstddef>
 #include <map>
-#include <optional>
 #include <string>
+
+#include "base/result.hpp"
 
 namespace edsc::emit {
 
@@ -17,7 +18,11 @@ extern const std::size_t embedded_template_count;
 using template_set = std::map<std::string, std::string>;  // file name -> text
 
 // The built-in templates, each replaced by `dir`/<name> when that file exists
-// (an empty `dir` means built-ins only). Returns an error sentence on I/O failure.
-[[nodiscard]] template_set load_templates(const std::string& dir, std::optional<std::string>& error);
+// (an empty `dir` means built-ins only); on I/O failure, the sentence that
+// says what could not be read.
+struct templates_unreadable {
+  std::string message;
+};
+[[nodiscard]] result<template_set, templates_unreadable> load_templates(const std::string& dir);
 
 }  // namespace edsc::emit

@@ -11,9 +11,8 @@ json on_formatting(session& s, const json& params) {
   // edsc fmt has one layout: the client's tabSize and insertSpaces do not apply.
   if (d.analysed->has_syntax_errors())
     throw rpc_error(error_code::request_failed, "edsc fmt: not formatted: fix the syntax errors first");
-  std::string why;
-  const auto out = edit::format(d.analysed->tree, {}, why);
-  if (!out) throw rpc_error(error_code::request_failed, "edsc fmt: not formatted: " + why);
+  const auto out = edit::format(d.analysed->tree, {});
+  if (!out) throw rpc_error(error_code::request_failed, "edsc fmt: not formatted: " + out.error().why);
   const std::string_view before = d.analysed->text();
   if (*out == before) return json::array();
   // Layout only: an edit that changes the meaning is a bug and is withheld.

@@ -11,11 +11,20 @@
 #include <vector>
 
 #include "corpus_dirs.hpp"
+#include "edit/edit_error.hpp"
 #include "test_paths.hpp"
 
 namespace authoring {
 
 namespace fs = std::filesystem;
+
+// An edit operation that was carried out; a refusal fails with its reason.
+inline ::testing::AssertionResult done(const edsc::edit::edited& r) {
+  if (r) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "refused: " << r.error().what();
+}
+// The reason an edit operation was refused, or "no error".
+inline std::string refusal(const edsc::edit::edited& r) { return r ? "no error" : r.error().what(); }
 
 inline std::string read_bytes(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);

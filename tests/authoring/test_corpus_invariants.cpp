@@ -38,20 +38,19 @@ TEST(CorpusInvariants, FmtIsIdempotentAndKeepsTheModel) {
     SCOPED_TRACE(p.filename().string());
     const auto bytes = read_bytes(p);
     const auto a = edit::analyze(p.string(), bytes);
-    std::string why;
-    const auto once = edit::format(a->tree, {}, why);
+    const auto once = edit::format(a->tree, {});
     if (a->has_syntax_errors()) {
       // Refused by the command; the library may still lay out what parsed.
       EXPECT_TRUE(has_syntax_errors(p)) << "unexpected syntax errors";
       ++refused;
       continue;
     }
-    ASSERT_TRUE(once.has_value()) << why;
+    ASSERT_TRUE(once.has_value()) << once.error().why;
     EXPECT_EQ(edit::model_fingerprint(p.string(), *once), edit::model_fingerprint(p.string(), bytes))
         << "fmt changed the model";
     const auto b = edit::analyze(p.string(), *once);
-    const auto twice = edit::format(b->tree, {}, why);
-    ASSERT_TRUE(twice.has_value()) << why;
+    const auto twice = edit::format(b->tree, {});
+    ASSERT_TRUE(twice.has_value()) << twice.error().why;
     EXPECT_TRUE(*twice == *once) << "fmt is not idempotent";
     // The line ending of the input is kept.
     EXPECT_EQ(edit::dominant_eol(*once), edit::dominant_eol(bytes));
@@ -67,9 +66,8 @@ TEST(CorpusInvariants, FmtWithEolChangesOnlyLineEndings) {
     SCOPED_TRACE(p.filename().string());
     const auto bytes = read_bytes(p);
     const auto a = edit::analyze(p.string(), bytes);
-    std::string why;
-    const auto lf = edit::format(a->tree, {"\n"}, why);
-    const auto crlf = edit::format(a->tree, {"\r\n"}, why);
+    const auto lf = edit::format(a->tree, {"\n"});
+    const auto crlf = edit::format(a->tree, {"\r\n"});
     ASSERT_TRUE(lf && crlf);
     EXPECT_EQ(lf->find('\r'), std::string::npos);
     EXPECT_TRUE(edit::with_eol(*lf, "\r\n") == *crlf);

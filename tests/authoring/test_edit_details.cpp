@@ -38,7 +38,7 @@ TEST_F(EditDetails, ResizeSaysWhenBitsStillEndInTheLastByte) {
   // 3 bytes with 16 significant bits, resized to 2: the 16 bits end in byte
   // 1, the new last byte, so they stay 16 (not "16 -> 16").
   edsc::edit::editor ed("t.eds", "[IO_Info]\n    Input1 = 3, 16, 0x0001, \"In\", 6, \"20 04 24 01 30 03\";\n");
-  ed.resize("Input1=2");
+  ASSERT_TRUE(ed.resize("Input1=2").ok());
   EXPECT_NE(ed.text().find("Input1 = 2, 16,"), std::string::npos) << ed.text();
   ASSERT_GE(ed.log().size(), 2u);
   EXPECT_NE(ed.log()[1].find("significant bits stay 16: they still end in the last byte"), std::string::npos)

@@ -12,7 +12,6 @@
 namespace authoring {
 namespace {
 
-using edsc::edit::edit_error;
 using edsc::edit::editor;
 
 const std::string diffuse_path = std::string(EDSC_PROJECT_DIR) + "/eds/rightsight-42ef-diffuse.eds";
@@ -31,9 +30,9 @@ const std::string small =
 
 TEST(EditOps, SetTouchesOnlyTheField) {
   editor ed("t.eds", small);
-  ed.set("Device.MajRev=2");
-  ed.set("IO_Info.Input1.name=Sensor data");
-  ed.set("IO_Info.Input1.2=16");
+  ASSERT_TRUE(done(ed.set("Device.MajRev=2")));
+  ASSERT_TRUE(done(ed.set("IO_Info.Input1.name=Sensor data")));
+  ASSERT_TRUE(done(ed.set("IO_Info.Input1.2=16")));
   std::string want = small;
   want.replace(want.find("MajRev = 1"), 10, "MajRev = 2");
   want.replace(want.find("1, 8, 0x0001, \"In\""), 18, "1, 16, 0x0001, \"Sensor data\"");
@@ -42,48 +41,40 @@ TEST(EditOps, SetTouchesOnlyTheField) {
 
 TEST(EditOps, SetBeyondTheWrittenFieldsAppendsThem) {
   editor ed("t.eds", small);
-  ed.set("IO_Info.Input1.help=\"Bit 0: on\"");
+  ASSERT_TRUE(done(ed.set("IO_Info.Input1.help=\"Bit 0: on\"")));
   EXPECT_NE(ed.text().find("\"20 04 24 01 30 03\", \"Bit 0: on\";"), std::string::npos) << ed.text();
 }
 
 TEST(EditOps, BadAddressesAndValuesNameTheChoices) {
   editor ed("t.eds", small);
-  auto message = [&](auto f) {
-    try {
-      f();
-    } catch (const edit_error& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
-  EXPECT_NE(message([&] { ed.set("Device.MajRev=256"); }).find("USINT (0..255)"), std::string::npos);
-  EXPECT_NE(message([&] { ed.set("IO_Info.Input1.sise=3"); }).find("1 size, 2 significant_bits"), std::string::npos);
-  EXPECT_NE(message([&] { ed.set("Devise.MajRev=3"); }).find("[File], [Device], [IO_Info]"), std::string::npos);
-  EXPECT_NE(message([&] { ed.set("Device.MayRev=3"); }).find("MajRev, MinRev"), std::string::npos);
-  EXPECT_NE(message([&] { ed.set("IO_Info.Input1=3"); }).find("has 6 fields"), std::string::npos);
-  EXPECT_NE(message([&] { ed.set("File.CreateDate=2020-01-02"); }).find("mm-dd-yyyy"), std::string::npos);
-  EXPECT_NE(message([&] { ed.set("IO_Info.Input1.path=\"20 0G\""); }).find("EPATH"), std::string::npos);
-  EXPECT_NE(message([&] { ed.add_entry("IO_Info.Input1=1"); }).find("already has"), std::string::npos);
-  EXPECT_NE(message([&] { ed.add_entry("Device.Colour=\"red\""); }).find("no keyword"), std::string::npos);
-  EXPECT_NE(message([&] { ed.add_section("IO_Info"); }).find("already has"), std::string::npos);
-  EXPECT_NE(message([&] { ed.resize("Input2=3"); }).find("no Input2"), std::string::npos);
+  EXPECT_NE(refusal(ed.set("Device.MajRev=256")).find("USINT (0..255)"), std::string::npos);
+  EXPECT_NE(refusal(ed.set("IO_Info.Input1.sise=3")).find("1 size, 2 significant_bits"), std::string::npos);
+  EXPECT_NE(refusal(ed.set("Devise.MajRev=3")).find("[File], [Device], [IO_Info]"), std::string::npos);
+  EXPECT_NE(refusal(ed.set("Device.MayRev=3")).find("MajRev, MinRev"), std::string::npos);
+  EXPECT_NE(refusal(ed.set("IO_Info.Input1=3")).find("has 6 fields"), std::string::npos);
+  EXPECT_NE(refusal(ed.set("File.CreateDate=2020-01-02")).find("mm-dd-yyyy"), std::string::npos);
+  EXPECT_NE(refusal(ed.set("IO_Info.Input1.path=\"20 0G\"")).find("EPATH"), std::string::npos);
+  EXPECT_NE(refusal(ed.add_entry("IO_Info.Input1=1")).find("already has"), std::string::npos);
+  EXPECT_NE(refusal(ed.add_entry("Device.Colour=\"red\"")).find("no keyword"), std::string::npos);
+  EXPECT_NE(refusal(ed.add_section("IO_Info")).find("already has"), std::string::npos);
+  EXPECT_NE(refusal(ed.resize("Input2=3")).find("no Input2"), std::string::npos);
   EXPECT_EQ(ed.text(), small);  // failed operations change nothing
 }
 
 TEST(EditOps, AddAndRemoveEntriesAndSections) {
   editor ed("t.eds", small);
-  ed.add_entry("Device.VendCode=65535");
-  ed.add_section("device classification");
-  ed.add_entry("Device Classification.class1=DeviceNet");
+  ASSERT_TRUE(done(ed.add_entry("Device.VendCode=65535")));
+  ASSERT_TRUE(done(ed.add_section("device classification")));
+  ASSERT_TRUE(done(ed.add_entry("Device Classification.class1=DeviceNet")));
   const auto text = ed.text();
   EXPECT_NE(
       text.find(
           "    MinRev = 4;\n    VendCode = 65535;\n\n[Device Classification]\n    Class1 = DeviceNet;\n[IO_Info]"),
       std::string::npos)
       << text;
-  ed.remove_entry("File.DescText");
-  ed.remove_section("Device Classification");
-  ed.remove_entry("Device.VendCode");
+  ASSERT_TRUE(done(ed.remove_entry("File.DescText")));
+  ASSERT_TRUE(done(ed.remove_section("Device Classification")));
+  ASSERT_TRUE(done(ed.remove_entry("Device.VendCode")));
   std::string want = small;
   want.erase(want.find("    DescText"), std::string("    DescText = \"x\";   $ what\n").size());
   EXPECT_EQ(ed.text(), want);
@@ -91,7 +82,7 @@ TEST(EditOps, AddAndRemoveEntriesAndSections) {
 
 TEST(EditOps, ResizeMovesTheOldDataSetIntoVariantIoInfo) {
   editor ed("t.eds", small);
-  ed.resize("Input1=3");
+  ASSERT_TRUE(done(ed.resize("Input1=3")));
   EXPECT_NE(ed.text().find("Input1 = 3, 24, 0x0001"), std::string::npos) << ed.text();
   EXPECT_NE(ed.text().find("\n\n[Variant_IO_Info]\n    Input1 = 1, 8, 0x0001, \"In\", 6, \"20 04 24 01 30 03\";\n"),
             std::string::npos)
@@ -100,16 +91,16 @@ TEST(EditOps, ResizeMovesTheOldDataSetIntoVariantIoInfo) {
   EXPECT_EQ(a->dev.variant_io.inputs.size(), 1u);
   // Explicit significant bits, and a second resize that finds the variant taken.
   editor ed2("t.eds", small);
-  ed2.resize("Input1=2:12");
+  ASSERT_TRUE(done(ed2.resize("Input1=2:12")));
   EXPECT_NE(ed2.text().find("Input1 = 2, 12,"), std::string::npos);
-  EXPECT_THROW(ed2.resize("Input1=4"), edit_error);
+  EXPECT_FALSE(ed2.resize("Input1=4").ok());
 }
 
 TEST(EditOps, ResizeKeepsZeroSignificantBits) {
   auto text = small;
   text.replace(text.find("1, 8,"), 5, "1, 0,");
   editor ed("t.eds", text);
-  ed.resize("Input1=4");
+  ASSERT_TRUE(done(ed.resize("Input1=4")));
   EXPECT_NE(ed.text().find("Input1 = 4, 0,"), std::string::npos);
   EXPECT_NE(ed.log()[1].find("stay 0"), std::string::npos);
 }
@@ -117,11 +108,11 @@ TEST(EditOps, ResizeKeepsZeroSignificantBits) {
 TEST(EditOps, CrlfFileKeepsCrlfEverywhereIncludingInsertedLines) {
   const auto bytes = crlf(authoring::read_bytes(diffuse_path));
   editor ed("crlf.eds", bytes);
-  ed.resize("Input1=3");
-  ed.set("IO_Info.Input1.help=\"Byte 0\\n\" \"Byte 1\\n\" \"Byte 2\"");
-  ed.add_entry("IO_Info.Output1=1, 0, 0x0001, \"Out\", 6, \"20 04 24 02 30 03\"");
-  ed.add_section("Device Classification");
-  ed.add_entry("Device Classification.Class1=DeviceNet");
+  ASSERT_TRUE(done(ed.resize("Input1=3")));
+  ASSERT_TRUE(done(ed.set("IO_Info.Input1.help=\"Byte 0\\n\" \"Byte 1\\n\" \"Byte 2\"")));
+  ASSERT_TRUE(done(ed.add_entry("IO_Info.Output1=1, 0, 0x0001, \"Out\", 6, \"20 04 24 02 30 03\"")));
+  ASSERT_TRUE(done(ed.add_section("Device Classification")));
+  ASSERT_TRUE(done(ed.add_entry("Device Classification.Class1=DeviceNet")));
   const auto& out = ed.text();
   for (std::size_t i = 0; i < out.size(); ++i) {
     if (out[i] == '\n') {
@@ -137,14 +128,14 @@ TEST(EditOps, CrlfFileKeepsCrlfEverywhereIncludingInsertedLines) {
 TEST(EditOps, AlignedCommentsKeepTheirColumn) {
   const auto bytes = authoring::read_bytes(diffuse_path);
   editor ed("d.eds", bytes);
-  ed.set("IO_Info.Input1.significant_bits=24");
+  ASSERT_TRUE(done(ed.set("IO_Info.Input1.significant_bits=24")));
   EXPECT_NE(ed.text().find("                24,                             $ significant bits\n"), std::string::npos);
 }
 
 TEST(EditOps, MultiPieceHelpKeepsOnePiecePerLine) {
   const auto bytes = authoring::read_bytes(diffuse_path);
   editor ed("d.eds", bytes);
-  ed.set("IO_Info.Input1.help=\"a\\n\" \"b\"");
+  ASSERT_TRUE(done(ed.set("IO_Info.Input1.help=\"a\\n\" \"b\"")));
   EXPECT_NE(ed.text().find("\"a\\n\"\n                \"b\";"), std::string::npos) << ed.text();
 }
 
@@ -152,7 +143,7 @@ TEST(EditOps, MultiPieceHelpKeepsOnePiecePerLine) {
 // after it, and the entry after it stays, on the same line.
 TEST(EditOps, RemovingAnEntryThatSharesItsLine) {
   editor ed("t.eds", "[Device]\n    MajRev = 1; \t MinRev = 4;\n    ProdCode = 2;\n");
-  ed.remove_entry("Device.MajRev");
+  ASSERT_TRUE(done(ed.remove_entry("Device.MajRev")));
   EXPECT_EQ(ed.text(), "[Device]\n    MinRev = 4;\n    ProdCode = 2;\n");
   editor first("t.eds", "[Device]\nMajRev = 1;  MinRev = 4;\n");
   first.remove_entry("Device.MinRev");
@@ -163,17 +154,12 @@ TEST(EditOps, RemovingAnEntryThatSharesItsLine) {
 TEST(EditOps, SectionNamesTheEditorAccepts) {
   for (const char* good : {"Extra_Notes", "Vendor.Data/Block-2", "Back\\Slash", "Two Words"}) {
     editor ed("t.eds", small);
-    EXPECT_NO_THROW(ed.add_section(good)) << good;
+    EXPECT_TRUE(done(ed.add_section(good))) << good;
     EXPECT_NE(ed.text().find(std::string("[") + good + "]"), std::string::npos) << good;
   }
   for (const char* bad : {"", " Lead", "Trail ", "Two  Spaces", "A]B", "Dollar$", "Tab\tName", "Semi;colon"}) {
     editor ed("t.eds", small);
-    try {
-      ed.add_section(bad);
-      ADD_FAILURE() << "accepted [" << bad << "]";
-    } catch (const edit_error& e) {
-      EXPECT_NE(std::string(e.what()).find("is not a section name"), std::string::npos) << e.what();
-    }
+    EXPECT_NE(refusal(ed.add_section(bad)).find("is not a section name"), std::string::npos) << "[" << bad << "]";
     EXPECT_EQ(ed.text(), small) << bad;
   }
 }
@@ -191,9 +177,9 @@ TEST(EditOps, AByteOrderMarkStaysInFront) {
       SCOPED_TRACE(before + op + std::to_string(mark.size()));
       editor ed("t.eds", mark + before);
       if (op == "add")
-        ed.add_section("Extra");
+        ASSERT_TRUE(done(ed.add_section("Extra")));
       else
-        ed.remove_section("File");
+        ASSERT_TRUE(done(ed.remove_section("File")));
       EXPECT_EQ(ed.text(), mark + after);
     }
   }

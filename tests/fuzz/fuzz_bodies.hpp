@@ -68,8 +68,7 @@ inline std::string fmt_body(std::string_view input) {
   const std::string text(input);
   const auto a = edit::analyze(fuzz_path, text);
   if (a->has_syntax_errors()) return {};  // fmt refuses these files
-  std::string why;
-  const auto out = edit::format(a->tree, {}, why);
+  const auto out = edit::format(a->tree, {});
   if (!out) return {};
   if (*out == text) return {};
   if (edit::model_fingerprint(fuzz_path, *out) != edit::model_fingerprint(fuzz_path, text))
