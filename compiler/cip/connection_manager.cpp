@@ -121,4 +121,17 @@ decoded<forward_close_reply> decode_forward_close(byte_view data, std::size_t ba
   return rep;
 }
 
+forward_open_reply granted(const forward_open_request& fo, std::uint32_t ot_connection_id,
+                           std::uint32_t to_connection_id) {
+  forward_open_reply r;
+  r.ot_connection_id = ot_connection_id;
+  r.to_connection_id = to_connection_id;
+  r.connection_serial = fo.connection_serial;
+  r.originator_vendor = fo.originator_vendor;
+  r.originator_serial = fo.originator_serial;
+  r.ot_api_us = fo.ot_rpi_us;
+  r.to_api_us = fo.to_rpi_us;
+  return r;
+}
+
 }  // namespace edsc::cip

@@ -65,6 +65,10 @@ struct forward_open_reply {
 };
 // The data of a successful (general status 0) Forward_Open reply.
 [[nodiscard]] decoded<forward_open_reply> decode_forward_open_ok(byte_view data, std::size_t base);
+// The reply of a device that grants `fo` as asked: its connection triad
+// echoed, the actual packet intervals equal to the RPIs asked.
+[[nodiscard]] forward_open_reply granted(const forward_open_request& fo, std::uint32_t ot_connection_id,
+                                         std::uint32_t to_connection_id);
 
 struct forward_close_request {
   std::uint8_t priority_tick = 0x0A, timeout_ticks = 0x0E;

@@ -46,16 +46,22 @@ bytes list_services_reply() {
   return encode_cpf({{item::list_services, s}}).value();  // 20 bytes
 }
 
-bytes encode_reply(service request_service, general_status general, std::span<const std::uint16_t> additional,
-                   byte_view data) {
+encoded encode_reply_with_status(service request_service, general_status general,
+                                 std::span<const std::uint16_t> additional, byte_view data) {
+  const auto words = fit<std::uint8_t>(additional.size(), 0xFF, "additional status size");
+  if (!words) return fail(words.error());
   bytes b;
   put_u8(b, static_cast<std::uint8_t>(code(request_service) | reply_bit));
   put_u8(b, 0);
   put_u8(b, code(general));
-  put_u8(b, static_cast<std::uint8_t>(additional.size()));
+  put_u8(b, *words);
   for (const auto w : additional) put_u16(b, w);
   put_bytes(b, data);
   return b;
+}
+
+bytes encode_reply(service request_service, general_status general, byte_view data) {
+  return encode_reply_with_status(request_service, general, {}, data).value();  // no words: always fits
 }
 
 encoded forward_open_ok_data(const forward_open_reply& r) {

@@ -28,9 +28,13 @@ void put_identity_fields(bytes& b, const identity& id);
 // ListServices reply data: the one "Communications" service, CIP over TCP and UDP class 0/1.
 [[nodiscard]] bytes list_services_reply();
 
-// Reply service (request | 0x80), reserved, general status, additional status words, data.
-[[nodiscard]] bytes encode_reply(service request_service, general_status general,
-                                 std::span<const std::uint16_t> additional = {}, byte_view data = {});
+// Reply service (request | 0x80), reserved, general status, no additional
+// status, data.
+[[nodiscard]] bytes encode_reply(service request_service, general_status general, byte_view data = {});
+// The same with additional status words (an extended status first); refused
+// when there are more than its size byte counts (255).
+[[nodiscard]] encoded encode_reply_with_status(service request_service, general_status general,
+                                               std::span<const std::uint16_t> additional, byte_view data = {});
 
 // Refused when the application reply is longer than its size byte says (255 words).
 [[nodiscard]] encoded forward_open_ok_data(const forward_open_reply& r);

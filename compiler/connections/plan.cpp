@@ -38,15 +38,17 @@ void put_segment(cip::bytes& out, std::uint8_t type8, std::uint8_t width, std::u
 
 // The EDS path as bytes, [ParamN] placeholders replaced by their defaults;
 // an error when a segment cannot be sent as the EDS means it.
-std::optional<std::string> encode_path(const model::device& dev, const model::epath& p, cip::bytes& out) {
-  if (p.symbolic) return "the path is a tag name the user picks (SYMBOL_ANSI)";
-  if (!p.complete) return "the path ends inside a segment";
+result<cip::bytes, std::string> encode_path(const model::device& dev, const model::epath& p) {
+  cip::bytes out;
+  if (p.symbolic) return fail(std::string("the path is a tag name the user picks (SYMBOL_ANSI)"));
+  if (!p.complete) return fail(std::string("the path ends inside a segment"));
   for (const auto& s : p.segments) {
     const auto v = segment_value(dev, s);
-    if (!v && s.kind != segment_kind::symbol) return "a segment's value is left to the configuration tool";
+    if (!v && s.kind != segment_kind::symbol)
+      return fail(std::string("a segment's value is left to the configuration tool"));
     switch (s.kind) {
       case segment_kind::port:
-        if (*v > 14 || s.link_address > 0xFF) return "a port segment edsc does not encode";
+        if (*v > 14 || s.link_address > 0xFF) return fail(std::string("a port segment edsc does not encode"));
         cip::put_u8(out, static_cast<std::uint8_t>(*v));
         cip::put_u8(out, static_cast<std::uint8_t>(s.link_address));
         break;
@@ -57,14 +59,14 @@ std::optional<std::string> encode_path(const model::device& dev, const model::ep
       case segment_kind::attribute: put_segment(out, 0x30, s.width, *v); break;
       case segment_kind::symbol:
         cip::put_u8(out, 0x91);
-        cip::put_u8(out, static_cast<std::uint8_t>(s.symbol.size()));
+        cip::put_u8(out, static_cast<std::uint8_t>(s.symbol.size()));  // read from a size byte: at most 255
         for (const char c : s.symbol) cip::put_u8(out, static_cast<std::uint8_t>(c));
         if (s.symbol.size() % 2) cip::put_u8(out, 0);
         break;
-      default: return "a segment edsc does not encode";
+      default: return fail(std::string("a segment edsc does not encode"));
     }
   }
-  return std::nullopt;
+  return out;
 }
 
 // The configuration a scanner sends by default: each member parameter's
@@ -104,8 +106,8 @@ cip::conn_priority pick_priority(const model::direction_params& d) {
 
 }  // namespace
 
-std::optional<std::string> encode_connection_path(const model::device& dev, const model::epath& p, cip::bytes& out) {
-  return encode_path(dev, p, out);
+result<cip::bytes, std::string> encode_connection_path(const model::device& dev, const model::epath& p) {
+  return encode_path(dev, p);
 }
 
 std::uint16_t network_size(std::uint32_t data, bool run_idle) {
@@ -193,8 +195,12 @@ std::vector<connection_plan> plan_connections(const model::device& dev) {
       p.not_openable = "a listen-only connection needs an owner connection that edsc does not hold";
     const auto* path = dev.path_of(c.path);
     if (p.not_openable.empty() && path == nullptr) p.not_openable = "it has no connection path";
-    if (p.not_openable.empty())
-      if (auto why = encode_path(dev, *path, p.app_path)) p.not_openable = *why;
+    if (p.not_openable.empty()) {
+      if (auto encoded = encode_path(dev, *path))
+        p.app_path = std::move(encoded.value());
+      else
+        p.not_openable = encoded.error();
+    }
 
     fill_request(dev, f, key, p);
     out.push_back(std::move(p));

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "base/result.hpp"
 #include "cip/connection_manager.hpp"
 #include "facts/header_view.hpp"
 #include "model/device.hpp"
@@ -47,10 +48,9 @@ struct assembly_target {
 [[nodiscard]] std::vector<assembly_target> plan_assemblies(const model::device& dev);
 
 // The connection path field as bytes, [ParamN] placeholders at their
-// defaults (what a scanner sends); the reason when it cannot be encoded.
+// defaults (what a scanner sends), or the reason it cannot be encoded.
 // The simulator reads listen-only paths with it too, which plans leave empty.
-[[nodiscard]] std::optional<std::string> encode_connection_path(const model::device& dev, const model::epath& p,
-                                                                cip::bytes& out);
+[[nodiscard]] result<cip::bytes, std::string> encode_connection_path(const model::device& dev, const model::epath& p);
 
 // The data size plus the 16-bit sequence count and, where the format has
 // one, the 32-bit run/idle header (as OpENer counts them, cipioconnection.c).

@@ -24,15 +24,17 @@ using cip::bytes;
 bytes refuse(state& s, const cip::request& q, const cip::forward_open_request& fo, const refusal& r,
              std::uint32_t connection = 0) {
   std::vector<std::uint16_t> add{cip::code(r.status)};
-  add.insert(add.end(), r.additional.begin(), r.additional.end());
+  if (r.size_accepted) add.push_back(*r.size_accepted);
   log_event(s, "refused",
             fmt::format("\"serial\":{},\"originator_vendor\":{},\"originator_serial\":{},\"connection\":{},"
                         "\"status\":\"0x{:02X}\",\"extended\":\"0x{:04X}\",\"why\":{}",
                         fo.connection_serial, fo.originator_vendor, fo.originator_serial, connection,
                         cip::code(general::connection_failure), cip::code(r.status), nlohmann::json(r.why).dump()));
-  return cip::encode_reply(
-      q.service, general::connection_failure, add,
-      cip::connection_triple_data(fo.connection_serial, fo.originator_vendor, fo.originator_serial));
+  // The extended status and at most one word after it: always fits.
+  return cip::encode_reply_with_status(
+             q.service, general::connection_failure, add,
+             cip::connection_triple_data(fo.connection_serial, fo.originator_vendor, fo.originator_serial))
+      .value();
 }
 
 std::string triple(const cip::forward_open_request& fo) {
@@ -139,20 +141,13 @@ std::optional<refusal> open_io(state& s, const cip::forward_open_request& fo, co
 
 // The connection opened: logged, kept, and the success reply.
 bytes accept(state& s, const cip::request& q, const cip::forward_open_request& fo, const open_connection& oc) {
-  cip::forward_open_reply rep;
-  rep.ot_connection_id = oc.ot_id;
-  rep.to_connection_id = oc.to_id;
-  rep.connection_serial = fo.connection_serial;
-  rep.originator_vendor = fo.originator_vendor;
-  rep.originator_serial = fo.originator_serial;
-  rep.ot_api_us = fo.ot_rpi_us;
-  rep.to_api_us = fo.to_rpi_us;
   log_event(
       s, "open",
       fmt::format("{},\"connection\":{},\"class\":{},\"ot_rpi_us\":{},\"to_rpi_us\":{}", triple(fo),
                   oc.point ? s.dev.points[*oc.point].number : 0, fo.transport & 0x0F, fo.ot_rpi_us, fo.to_rpi_us));
   s.connections.push_back(oc);
-  return cip::encode_reply(q.service, general::success, {},
+  const auto rep = cip::granted(fo, oc.ot_id, oc.to_id);
+  return cip::encode_reply(q.service, general::success,
                            cip::forward_open_ok_data(rep).value());  // no application reply: fits
 }
 
@@ -205,9 +200,10 @@ bytes forward_close(state& s, const cip::request& q) {
   });
   if (it == s.connections.end()) {
     const std::uint16_t add[] = {cip::code(ext::connection_not_found)};
-    return cip::encode_reply(
-        q.service, general::connection_failure, add,
-        cip::connection_triple_data(fc.connection_serial, fc.originator_vendor, fc.originator_serial));
+    return cip::encode_reply_with_status(
+               q.service, general::connection_failure, add,
+               cip::connection_triple_data(fc.connection_serial, fc.originator_vendor, fc.originator_serial))
+        .value();  // one word: always fits
   }
   log_event(
       s, "close",
@@ -216,7 +212,7 @@ bytes forward_close(state& s, const cip::request& q) {
   s.connections.erase(it);
   close_orphans(s);
   return cip::encode_reply(
-      q.service, general::success, {},
+      q.service, general::success,
       cip::connection_triple_data(fc.connection_serial, fc.originator_vendor, fc.originator_serial));
 }
 

@@ -97,16 +97,15 @@ cip::identity identity_of(const model::device_info& m, std::uint32_t serial) {
   return id;
 }
 
-// Why the simulator cannot serve a planned connection; empty when it can
-// (`app_path` then holds its application path).
-std::string unserved_why(const model::device& dev, const connections::connection_plan& p, cip::bytes& app_path) {
+// The application path of a planned connection the simulator serves, or
+// why it cannot serve it.
+result<cip::bytes, std::string> served_path(const model::device& dev, const connections::connection_plan& p) {
   const auto& c = *p.conn;
-  if (!c.decoded) return "its trigger/transport or parameters field is not a number";
-  if (!(c.tt.transport_classes & 0x2)) return "it is not a class 1 connection";
+  if (!c.decoded) return fail(std::string("its trigger/transport or parameters field is not a number"));
+  if (!(c.tt.transport_classes & 0x2)) return fail(std::string("it is not a class 1 connection"));
   const auto* path = dev.path_of(c.path);
-  if (path == nullptr) return "it has no connection path";
-  if (auto why = connections::encode_connection_path(dev, *path, app_path)) return *why;
-  return {};
+  if (path == nullptr) return fail(std::string("it has no connection path"));
+  return connections::encode_connection_path(dev, *path);
 }
 
 // One connection point per ConnectionN served, with the assemblies it names.
@@ -114,10 +113,12 @@ void add_points(const model::device& dev, device& d) {
   for (auto& p : connections::plan_connections(dev)) {
     connection_point cp;
     cp.number = p.conn->number;
-    if (auto why = unserved_why(dev, p, cp.app_path); !why.empty()) {
-      d.skipped.push_back({cp.number, std::move(why)});
+    auto path = served_path(dev, p);
+    if (!path) {
+      d.skipped.push_back({cp.number, std::move(path.error())});
       continue;
     }
+    cp.app_path = std::move(path.value());
     cp.kind = p.kind.type;
     const auto& f = p.facts;
     add_assembly(d, f.input_instance, f.input_size, assembly_role::input);

@@ -88,7 +88,7 @@ bytes packet(const state& s, cip::service service, std::uint8_t number, std::siz
                                      : type::middle;
   const auto d = cip::encode_upload_packet(number, t, cip::byte_view(content).subspan(from, n),
                                            is_last ? std::optional(cip::file_checksum(content)) : std::nullopt);
-  return cip::encode_reply(service, general::success, {}, d);
+  return cip::encode_reply(service, general::success, d);
 }
 
 bytes transfer(state& s, const cip::request& q) {
@@ -116,7 +116,7 @@ bytes initiate(state& s, const cip::request& q) {
   s.upload = file_upload{true, false, q.data[0], 0, 0, 0};  // a new upload restarts one left unfinished
   const auto d =
       cip::encode_upload_offer({static_cast<std::uint32_t>(s.dev.file.content.size()), s.upload.transfer_size});
-  return cip::encode_reply(q.service, general::success, {}, d);
+  return cip::encode_reply(q.service, general::success, d);
 }
 
 }  // namespace

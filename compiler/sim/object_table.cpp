@@ -25,7 +25,7 @@ bytes get_all(const attribute_level& lv, object_call& c) {
   bytes d;
   for (const auto& a : lv.attributes)
     if (a.in_all) a.get(c.s, c.a.instance, d);
-  return cip::encode_reply(c.q.service, general::success, {}, d);
+  return cip::encode_reply(c.q.service, general::success, d);
 }
 
 general set_single(const attribute* at, object_call& c) {
@@ -44,7 +44,7 @@ bytes get_single(const attribute* at, object_call& c) {
   if (at == nullptr) return cip::encode_reply(c.q.service, general::attribute_not_supported);
   bytes d;
   at->get(c.s, c.a.instance, d);
-  return cip::encode_reply(c.q.service, general::success, {}, d);
+  return cip::encode_reply(c.q.service, general::success, d);
 }
 
 }  // namespace

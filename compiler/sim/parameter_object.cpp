@@ -160,9 +160,9 @@ parameter_instance make_instance(const model::device& dev, const model::param& p
     pi.read_only = true;
   }
   pi.value = pi.def;
-  if (const auto* path = dev.path_of(p.link_path);
-      path != nullptr && connections::encode_connection_path(dev, *path, pi.link_path))
-    pi.link_path.clear();  // a path the device cannot write out ([ParamN] in it): none
+  // A path the device cannot write out ([ParamN] in it) is left empty.
+  if (const auto* path = dev.path_of(p.link_path); path != nullptr)
+    pi.link_path = connections::encode_connection_path(dev, *path).value_or(cip::bytes{});
   pi.multiplier = number_or<std::uint16_t>(p.scaling_multiplier, 1);
   pi.divisor = number_or<std::uint16_t>(p.scaling_divisor, 1);
   pi.base = number_or<std::uint16_t>(p.scaling_base, 1);

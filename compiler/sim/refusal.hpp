@@ -16,7 +16,7 @@ using ext = cip::extended_status;
 
 struct refusal {
   cip::extended_status status{};
-  std::vector<std::uint16_t> additional;  // after the extended status: the size accepted (0x0126-0x0128)
+  std::optional<std::uint16_t> size_accepted;  // the word after the extended status (0x0126-0x0128)
   std::string why;
 };
 

@@ -206,6 +206,16 @@ TEST(cip_connection_manager, forward_open_reply_and_close) {
   EXPECT_FALSE(decode_forward_open_ok(unhex("11 11"), 0).ok());
 }
 
+TEST(cip_connection_manager, a_granted_reply_echoes_the_triad_and_each_direction_s_rpi) {
+  auto fo = live_test::opener_connection1_request();
+  fo.ot_rpi_us = 10000;  // the two directions differ, so a swap shows
+  fo.to_rpi_us = 50000;
+  const auto r = granted(fo, 0x11111111, 0x22222222);
+  // ids, serial 0x4501, vendor 0xFFFF, originator serial, O->T API 10 ms, T->O API 50 ms, no application reply
+  EXPECT_EQ(hex(forward_open_ok_data(r).value()),
+            "11 11 11 11 22 22 22 22 01 45 FF FF 65 64 73 63 10 27 00 00 50 C3 00 00 00 00");
+}
+
 TEST(cip_io, class1_frame_round_trip) {
   io_frame f;
   f.connection_id = 0xAABBCCDD;

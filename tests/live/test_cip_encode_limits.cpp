@@ -110,10 +110,23 @@ TEST(cip_encode_limits, forward_open_application_reply_over_255_words_is_refused
   expect_refused(forward_open_ok_data(r), "application reply size", 256, 255);
 }
 
+TEST(cip_encode_limits, reply_with_over_255_additional_status_words_is_refused) {
+  const std::vector<std::uint16_t> most(255, 0x0126), over(256, 0x0126);
+  const auto ok = encode_reply_with_status(service::forward_open, general_status::connection_failure, most);
+  ASSERT_TRUE(ok.ok());
+  // Service | 0x80, reserved, general status, the word count, then the words.
+  ASSERT_EQ(ok->size(), 4u + 2 * 255);
+  EXPECT_EQ((*ok)[0], 0xD4);
+  EXPECT_EQ((*ok)[2], 0x01);
+  EXPECT_EQ((*ok)[3], 255);
+  expect_refused(encode_reply_with_status(service::forward_open, general_status::connection_failure, over),
+                 "additional status size", 256, 255);
+}
+
 TEST(cip_encode_limits, get_attribute_all_reply_too_large_for_sendrrdata_is_refused) {
   // A reply the Message Router would build (4 bytes of header, then the
   // attributes) too large for the item that carries it back.
-  const auto reply = encode_reply(service::get_attributes_all, general_status::success, {}, bytes(65532, 0));
+  const auto reply = encode_reply(service::get_attributes_all, general_status::success, bytes(65532, 0));
   ASSERT_EQ(reply.size(), 65536u);
   expect_refused(send_rr_data(reply, 0), "CPF item length", 65536, 65535);
   // The largest that fits one item still overflows the encapsulation body,
