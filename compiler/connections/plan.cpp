@@ -11,15 +11,6 @@ namespace {
 
 using model::segment_kind;
 
-std::optional<std::uint32_t> segment_value(const model::device& dev, const model::epath_segment& s) {
-  if (!s.placeholder.empty()) return std::nullopt;
-  if (!s.has_param) return s.value;
-  if (!s.param.resolved() || s.param.target >= dev.params.size()) return std::nullopt;
-  const auto& d = dev.params[s.param.target].default_value;
-  if (d.is_integer() && !d.negative) return static_cast<std::uint32_t>(d.as_uint());
-  return std::nullopt;
-}
-
 // A logical segment in the width the EDS wrote it (8, 16 or 32 bits).
 void put_segment(cip::bytes& out, std::uint8_t type8, std::uint8_t width, std::uint32_t v) {
   if (width == 8 && v <= 0xFF) {
@@ -42,30 +33,11 @@ result<cip::bytes, std::string> encode_path(const model::device& dev, const mode
   cip::bytes out;
   if (p.symbolic) return fail(std::string("the path is a tag name the user picks (SYMBOL_ANSI)"));
   if (!p.complete) return fail(std::string("the path ends inside a segment"));
-  for (const auto& s : p.segments) {
-    const auto v = segment_value(dev, s);
-    if (!v && s.kind != segment_kind::symbol)
-      return fail(std::string("a segment's value is left to the configuration tool"));
-    switch (s.kind) {
-      case segment_kind::port:
-        if (*v > 14 || s.link_address > 0xFF) return fail(std::string("a port segment edsc does not encode"));
-        cip::put_u8(out, static_cast<std::uint8_t>(*v));
-        cip::put_u8(out, static_cast<std::uint8_t>(s.link_address));
-        break;
-      case segment_kind::class_id: put_segment(out, 0x20, s.width, *v); break;
-      case segment_kind::instance: put_segment(out, 0x24, s.width, *v); break;
-      case segment_kind::member: put_segment(out, 0x28, s.width, *v); break;
-      case segment_kind::connection_point: put_segment(out, 0x2C, s.width, *v); break;
-      case segment_kind::attribute: put_segment(out, 0x30, s.width, *v); break;
-      case segment_kind::symbol:
-        cip::put_u8(out, 0x91);
-        cip::put_u8(out, static_cast<std::uint8_t>(s.symbol.size()));  // read from a size byte: at most 255
-        for (const char c : s.symbol) cip::put_u8(out, static_cast<std::uint8_t>(c));
-        if (s.symbol.size() % 2) cip::put_u8(out, 0);
-        break;
-      default: return fail(std::string("a segment edsc does not encode"));
-    }
-  }
+  for (const auto& s : p.segments)
+    if (auto one = encode_segment(dev, s); !one)
+      return fail(one.error());
+    else
+      cip::put_bytes(out, *one);
   return out;
 }
 
@@ -105,6 +77,39 @@ cip::conn_priority pick_priority(const model::direction_params& d) {
 }
 
 }  // namespace
+
+result<cip::bytes, std::string> encode_segment(const model::device& dev, const model::epath_segment& s) {
+  cip::bytes out;
+  const auto v = segment_value(dev, s);
+  if (!v && s.kind != segment_kind::symbol)
+    return fail(std::string("a segment's value is left to the configuration tool"));
+  switch (s.kind) {
+    case segment_kind::port:
+      if (*v > 14 || s.link_address > 0xFF) return fail(std::string("a port segment edsc does not encode"));
+      cip::put_u8(out, static_cast<std::uint8_t>(*v));
+      cip::put_u8(out, static_cast<std::uint8_t>(s.link_address));
+      break;
+    case segment_kind::class_id: put_segment(out, 0x20, s.width, *v); break;
+    case segment_kind::instance: put_segment(out, 0x24, s.width, *v); break;
+    case segment_kind::member: put_segment(out, 0x28, s.width, *v); break;
+    case segment_kind::connection_point: put_segment(out, 0x2C, s.width, *v); break;
+    case segment_kind::attribute: put_segment(out, 0x30, s.width, *v); break;
+    case segment_kind::symbol:
+      cip::put_u8(out, 0x91);
+      cip::put_u8(out, static_cast<std::uint8_t>(s.symbol.size()));  // read from a size byte: at most 255
+      for (const char c : s.symbol) cip::put_u8(out, static_cast<std::uint8_t>(c));
+      if (s.symbol.size() % 2) cip::put_u8(out, 0);
+      break;
+    default: return fail(std::string("a segment edsc does not encode"));
+  }
+  return out;
+}
+
+std::optional<std::uint32_t> segment_value(const model::device& dev, const model::epath_segment& s) {
+  const auto n = emit::segment_number(dev, s);
+  if (!n || *n > 0xFFFFFFFFu) return std::nullopt;
+  return static_cast<std::uint32_t>(*n);
+}
 
 result<cip::bytes, std::string> encode_connection_path(const model::device& dev, const model::epath& p) {
   return encode_path(dev, p);
@@ -152,11 +157,11 @@ void fill_request(const model::device& dev, const emit::eip_connection_facts& f,
   fo.transport = static_cast<std::uint8_t>((trigger << 4) | 0x01);
   if (key) cip::put_key(fo.path, *key);
   cip::put_bytes(fo.path, p.app_path);
-  if (f.config_size > 0 && f.config_instance != 0)
-    if (auto seg = cip::put_data_segment(
-            fo.path, config_data(dev, emit::assembly_of(dev, c.target_config_format), f.config_size));
-        !seg && p.not_openable.empty())
+  if (f.config_size > 0 && f.config_instance != 0) {
+    p.config_data = config_data(dev, emit::assembly_of(dev, c.target_config_format), f.config_size);
+    if (auto seg = cip::put_data_segment(fo.path, p.config_data); !seg && p.not_openable.empty())
       p.not_openable = "its configuration data does not fit a Forward_Open: " + seg.error().what();
+  }
 }
 
 }  // namespace
@@ -189,10 +194,7 @@ std::vector<connection_plan> plan_connections(const model::device& dev) {
     if (p.to_rpi_us == 0) p.to_rpi_us = p.ot_rpi_us;
     if (p.ot_rpi_us == 0) p.ot_rpi_us = p.to_rpi_us;
     if (p.ot_rpi_us == 0) p.ot_rpi_us = p.to_rpi_us = default_rpi_us;
-    if (!(c.tt.transport_classes & 0x2))
-      p.not_openable = "it is not a class 1 connection";
-    else if (p.kind.type == model::app_type::listen_only)
-      p.not_openable = "a listen-only connection needs an owner connection that edsc does not hold";
+    if (!(c.tt.transport_classes & 0x2)) p.not_openable = "it is not a class 1 connection";
     const auto* path = dev.path_of(c.path);
     if (p.not_openable.empty() && path == nullptr) p.not_openable = "it has no connection path";
     if (p.not_openable.empty()) {
@@ -201,8 +203,10 @@ std::vector<connection_plan> plan_connections(const model::device& dev) {
       else
         p.not_openable = encoded.error();
     }
-
     fill_request(dev, f, key, p);
+    // The request is whole, but a device refuses it until an owner runs.
+    p.needs_owner = p.not_openable.empty() && p.kind.type == model::app_type::listen_only;
+    if (p.needs_owner) p.not_openable = "a listen-only connection needs an owner connection that edsc does not hold";
     out.push_back(std::move(p));
   }
   return out;

@@ -28,7 +28,9 @@ struct connection_plan {
   model::app_kind kind;               // the one rule (model::classify) over field 1 and the configuration
   cip::forward_open_request request;  // serials left to the caller
   cip::bytes app_path;                // without key and data (for Forward_Close)
+  cip::bytes config_data;             // the data segment's bytes: member parameters' defaults
   std::string not_openable;           // why edsc does not open it; empty: it does
+  bool needs_owner = false;           // listen-only: the request is whole, but opens only beside an owner
 };
 
 // The key a scanner builds from [Device]; nullopt when a field is missing.
@@ -46,6 +48,12 @@ struct assembly_target {
   span named_at;  // the path that gives the instance (the assembly's own, or a connection's)
 };
 [[nodiscard]] std::vector<assembly_target> plan_assemblies(const model::device& dev);
+
+// One segment of a connection path as bytes, or why edsc cannot send it.
+[[nodiscard]] result<cip::bytes, std::string> encode_segment(const model::device& dev, const model::epath_segment& s);
+// The number a segment carries, a [ParamN] placeholder at its default; none
+// when the tool fills it in (`SLOT`) or the parameter has no number.
+[[nodiscard]] std::optional<std::uint32_t> segment_value(const model::device& dev, const model::epath_segment& s);
 
 // The connection path field as bytes, [ParamN] placeholders at their
 // defaults (what a scanner sends), or the reason it cannot be encoded.

@@ -10,16 +10,6 @@ namespace {
 
 using model::value;
 
-// The number an EPATH segment carries; a [ParamN] placeholder stands for its default.
-std::optional<std::uint64_t> segment_number(const model::device& dev, const model::epath_segment& s) {
-  if (!s.placeholder.empty()) return std::nullopt;  // filled in by the tool (`SLOT`)
-  if (!s.has_param) return s.value;
-  if (!s.param.resolved() || s.param.target >= dev.params.size()) return std::nullopt;
-  const auto& d = dev.params[s.param.target].default_value;
-  if (d.is_integer() && !d.negative) return d.as_uint();
-  return std::nullopt;
-}
-
 std::uint32_t assembly_instance(const model::device& dev, const model::assembly* a) {
   if (a == nullptr) return 0;
   const auto* p = dev.path_of(a->path);
@@ -69,6 +59,15 @@ void instances_from_path(const model::device& dev, const model::connection& c, e
 }
 
 }  // namespace
+
+std::optional<std::uint64_t> segment_number(const model::device& dev, const model::epath_segment& s) {
+  if (!s.placeholder.empty()) return std::nullopt;  // filled in by the tool (`SLOT`)
+  if (!s.has_param) return s.value;
+  if (!s.param.resolved() || s.param.target >= dev.params.size()) return std::nullopt;
+  const auto& d = dev.params[s.param.target].default_value;
+  if (d.is_integer() && !d.negative) return d.as_uint();
+  return std::nullopt;
+}
 
 const model::assembly* assembly_of(const model::device& dev, const value& format) {
   const auto* r = format.as_ref();

@@ -15,6 +15,9 @@ namespace edsc::emit {
 // The integer a value states, following a ParamN reference to its default;
 // nullopt when neither gives a non-negative integer.
 [[nodiscard]] std::optional<std::uint64_t> number_or_param_default(const model::device& dev, const model::value& v);
+// The number an EPATH segment carries; a [ParamN] placeholder stands for its
+// default, and a word the tool fills in (`SLOT`) for nothing.
+[[nodiscard]] std::optional<std::uint64_t> segment_number(const model::device& dev, const model::epath_segment& s);
 // The assembly a connection's format field names, or null.
 [[nodiscard]] const model::assembly* assembly_of(const model::device& dev, const model::value& format);
 // Bytes of an assembly: its size field, else the sum of its members' bits.
