@@ -31,5 +31,6 @@ void register_diff(CLI::App& app, command_action& run);
 void register_probe(CLI::App& app, command_action& run);
 void register_sim(CLI::App& app, command_action& run);
 void register_completions(CLI::App& app, command_action& run);
+void register_connection(CLI::App& app, command_action& run);
 
 }  // namespace edsc::driver

@@ -1,0 +1,23 @@
+#pragma once
+// `edsc connection`'s outputs: the settings of each ConnectionN
+// (connections/settings.hpp) as text for a person and as JSON for a tool
+// (docs/connection.md gives the JSON's fields).
+#include <string>
+#include <vector>
+
+#include "connections/settings.hpp"
+#include "source/source_file.hpp"
+
+namespace edsc::emit {
+
+[[nodiscard]] std::string render_connections_text(const std::vector<connections::connection_setting>& all,
+                                                  const source_file& src);
+[[nodiscard]] std::string render_connections_json(const std::vector<connections::connection_setting>& all,
+                                                  const source_file& src);
+
+// Bytes as two-digit upper-case hex separated by blanks ("20 04 24 01").
+[[nodiscard]] std::string hex_bytes(const cip::bytes& b);
+// An interval in microseconds the way a scanner's dialog asks it: "10 ms", "2.5 ms", "250 µs".
+[[nodiscard]] std::string interval_words(std::uint32_t us);
+
+}  // namespace edsc::emit
