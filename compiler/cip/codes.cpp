@@ -22,8 +22,8 @@ struct row {
 #define CIP_CLASS(sym, code, name) {table::class_id, code, name},
 #define CIP_SERVICE(sym, code, name) {table::service, code, name},
 #define CIP_CLASS_SERVICE(sym, c, n, name) {table::service, n, name, code(class_id::c), true},
-#define GENERAL_STATUS(sym, code, words) {table::general, code, words},
-#define EXTENDED_STATUS(sym, code, words) {table::extended, code, words},
+#define GENERAL_STATUS(sym, code, words, ...) {table::general, code, words},
+#define EXTENDED_STATUS(sym, code, words, ...) {table::extended, code, words},
 #define IDENTITY_BIT(sym, mask, words) {table::bit, mask, words},
 #define DEVICE_STATE(sym, value, words) {table::state, value, words},
 constexpr row rows[] = {

@@ -42,13 +42,13 @@ enum class service : std::uint8_t {
 #undef CIP_SERVICE
 #undef CIP_CLASS_SERVICE
 
-#define GENERAL_STATUS(sym, code, words) sym = code,
+#define GENERAL_STATUS(sym, code, words, ...) sym = code,
 enum class general_status : std::uint8_t {
 #include "cip/codes.def"
 };
 #undef GENERAL_STATUS
 
-#define EXTENDED_STATUS(sym, code, words) sym = code,
+#define EXTENDED_STATUS(sym, code, words, ...) sym = code,
 enum class extended_status : std::uint16_t {
 #include "cip/codes.def"
 };

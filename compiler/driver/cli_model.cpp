@@ -108,8 +108,15 @@ nlohmann::ordered_json json_of(const cli_command& c) {
   return j;
 }
 
-// A whole number as written on a command line: decimal, or 0x hexadecimal,
-// with an optional minus sign. Leading zeros are decimal, never octal.
+std::optional<double> decimal_fraction(std::string_view w) {
+  double v = 0;
+  const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), v);
+  if (w.empty() || ec != std::errc() || end != w.data() + w.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+}  // namespace
+
 std::optional<double> whole_number(std::string_view w) {
   const bool negative = w.starts_with('-');
   if (negative) w.remove_prefix(1);
@@ -123,15 +130,6 @@ std::optional<double> whole_number(std::string_view w) {
   if (w.empty() || ec != std::errc() || end != w.data() + w.size() || v > (std::uint64_t{1} << 53)) return std::nullopt;
   return negative ? -static_cast<double>(v) : static_cast<double>(v);
 }
-
-std::optional<double> decimal_fraction(std::string_view w) {
-  double v = 0;
-  const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), v);
-  if (w.empty() || ec != std::errc() || end != w.data() + w.size() || !std::isfinite(v)) return std::nullopt;
-  return v;
-}
-
-}  // namespace
 
 std::string_view to_string(arg_kind k) {
   switch (k) {

@@ -67,6 +67,11 @@ struct cli_command {
 // writer and every number of every command.
 [[nodiscard]] std::string to_json(const cli_command& top);
 
+// A whole number as written on a command line: decimal, or 0x hexadecimal,
+// with an optional minus sign; leading zeros are decimal, never octal. None
+// for a word that is not one or is beyond 2^53.
+[[nodiscard]] std::optional<double> whole_number(std::string_view w);
+
 // Registers what the value of `opt` is; returns `opt`.
 CLI::Option* takes(CLI::Option* opt, arg_kind kind);
 

@@ -30,6 +30,7 @@ void register_doc(CLI::App& app, command_action& run);
 void register_diff(CLI::App& app, command_action& run);
 void register_probe(CLI::App& app, command_action& run);
 void register_sim(CLI::App& app, command_action& run);
+void register_explain(CLI::App& app, command_action& run);
 void register_completions(CLI::App& app, command_action& run);
 void register_connection(CLI::App& app, command_action& run);
 

@@ -39,6 +39,7 @@ constexpr command_entry commands[] = {
     {"probe", register_probe},
     {"sim", register_sim},
     {"connection", register_connection},
+    {"explain", register_explain},
     {"completions", register_completions},
 };
 

@@ -42,13 +42,13 @@ TEST(cip_codes, each_code_once_per_table) {
 #include "cip/codes.def"
       },
       "services");
-#define GENERAL_STATUS(sym, code, words) code,
+#define GENERAL_STATUS(sym, code, words, ...) code,
   expect_unique<unsigned>(
       {
 #include "cip/codes.def"
       },
       "general statuses");
-#define EXTENDED_STATUS(sym, code, words) code,
+#define EXTENDED_STATUS(sym, code, words, ...) code,
   expect_unique<unsigned>(
       {
 #include "cip/codes.def"

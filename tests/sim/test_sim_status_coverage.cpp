@@ -399,8 +399,8 @@ struct named_status {
 std::map<layer, std::vector<named_status>> codes_def() {
   std::map<layer, std::vector<named_status>> all;
 #define ENCAP_STATUS(sym, code, words) all[layer::encap].push_back({code, #sym});
-#define GENERAL_STATUS(sym, code, words) all[layer::general].push_back({code, #sym});
-#define EXTENDED_STATUS(sym, code, words) all[layer::extended].push_back({code, #sym});
+#define GENERAL_STATUS(sym, code, words, ...) all[layer::general].push_back({code, #sym});
+#define EXTENDED_STATUS(sym, code, words, ...) all[layer::extended].push_back({code, #sym});
 #include "cip/codes.def"
 #undef ENCAP_STATUS
 #undef GENERAL_STATUS
