@@ -107,11 +107,11 @@ void register_connection(CLI::App& app, command_action& run) {
   takes(cmd->add_option("connection", cli->which, "One connection: its number N (or ConnectionN) or its name"),
         arg_kind::text);
   add_stdin_filename(cmd, cli->stdin_name);
-  add_choice(cmd, "--for", cli->format, {"text", "json"}, "What to write: text for a person (default), or JSON");
+  add_choice(cmd, "--format", cli->format, {"text", "json"}, "What to write: text for a person (default), or JSON");
   takes(cmd->add_option("-o,--output", cli->output, "Write here ('-': standard output, the default)"),
         arg_kind::output);
   add_example(cmd, "edsc connection device.eds", "every connection's settings");
-  add_example(cmd, "edsc connection device.eds 1 --for json", "Connection1 for a program to read");
+  add_example(cmd, "edsc connection device.eds 1 --format json", "Connection1 for a program to read");
   cmd->callback([&run, cli] { run = [cli] { return run_connection(*cli); }; });
 }
 

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cip/explain.hpp"
+#include "driver/choice.hpp"
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
 
@@ -16,7 +17,7 @@ namespace {
 
 struct explain_cli {
   std::vector<std::string> codes;
-  bool json = false;
+  std::string format = "text";
 };
 
 // A status code as typed, a whole number as every option takes one (0 to
@@ -107,7 +108,7 @@ int run_explain(const explain_cli& cli) {
     return exit_failure;
   }
   const auto& all = read.value();
-  if (!write_all(stdout, cli.json ? render_json(all) : render_text(all)) || std::fflush(stdout) != 0)
+  if (!write_all(stdout, cli.format == "json" ? render_json(all) : render_text(all)) || std::fflush(stdout) != 0)
     return exit_failure;
   int status = exit_ok;
   for (const auto& e : all)
@@ -128,10 +129,10 @@ void register_explain(CLI::App& app, command_action& run) {
             ->type_name("CODE"),
         arg_kind::text)
       ->required();
-  cmd->add_flag("--json", cli->json, "Write the explanations as JSON");
+  add_choice(cmd, "--format", cli->format, {"text", "json"}, "What to write: text (default) or JSON");
   add_example(cmd, "edsc explain 0x01 0x0127", "a refused Forward_Open: the general status, then the extended one");
   add_example(cmd, "edsc explain 0x05", "a general status alone");
-  add_example(cmd, "edsc explain --json 0x01 0x0127", "the same as JSON");
+  add_example(cmd, "edsc explain --format json 0x01 0x0127", "the same as JSON");
   cmd->callback([&run, cli] { run = [cli] { return run_explain(*cli); }; });
 }
 

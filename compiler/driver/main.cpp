@@ -23,24 +23,15 @@ struct command_entry {
 };
 // In the order `edsc --help` lists them.
 constexpr command_entry commands[] = {
-    {"check", register_check},
-    {"edit", register_edit},
-    {"dump", register_dump},
-    {"header", register_header},
-    {"rules", register_rules},
-    {"fix", register_fix},
-    {"fmt", register_fmt},
-    {"new", register_new},
-    {"verify", register_verify},
-    {"lsp", register_lsp},
-    {"net", register_net},
-    {"doc", register_doc},
-    {"diff", register_diff},
-    {"probe", register_probe},
-    {"sim", register_sim},
-    {"connection", register_connection},
-    {"explain", register_explain},
-    {"completions", register_completions},
+    {"check", register_check},     {"edit", register_edit},
+    {"dump", register_dump},       {"header", register_header},
+    {"rules", register_rules},     {"fix", register_fix},
+    {"fmt", register_fmt},         {"new", register_new},
+    {"verify", register_verify},   {"lsp", register_lsp},
+    {"net", register_net},         {"doc", register_doc},
+    {"diff", register_diff},       {"probe", register_probe},
+    {"sim", register_sim},         {"connection", register_connection},
+    {"explain", register_explain}, {"completions", register_completions},
 };
 
 // Building every command's options costs more than the rest of a small run,

@@ -77,7 +77,7 @@ TEST_F(ConnectionCli, SyntaxErrorsStopItBeforeAnySetting) {
 }
 
 TEST_F(ConnectionCli, JsonParsesAndMatchesTheText) {
-  const auto r = run_edsc({"connection", opener(), "1", "--for", "json"});
+  const auto r = run_edsc({"connection", opener(), "1", "--format", "json"});
   ASSERT_EQ(r.status, 0) << r.output;
   const auto j = nlohmann::json::parse(r.output);
   ASSERT_EQ(j["connections"].size(), 1u);
@@ -91,7 +91,7 @@ TEST_F(ConnectionCli, JsonParsesAndMatchesTheText) {
 
 TEST_F(ConnectionCli, OutputGoesThroughTheOutputPolicy) {
   const auto out = dir_ / "settings.json";
-  const auto r = run_edsc({"connection", opener(), "--for", "json", "-o", out.string()});
+  const auto r = run_edsc({"connection", opener(), "--format", "json", "-o", out.string()});
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_EQ(r.output, "");
   EXPECT_EQ(nlohmann::json::parse(read_bytes(out))["connections"].size(), 3u);

@@ -178,7 +178,7 @@ TEST(Explain, WhatIsNoCodeIsAUsageError) {
 // unknown code the object is there with nulls, and the error follows it.
 TEST(Explain, JsonReadsBackAsTheTableSays) {
   auto args = every_named_code();
-  args.insert(args.begin(), {"explain", "--json"});
+  args.insert(args.begin(), {"explain", "--format", "json"});
   args.push_back("0x23");
   const auto r = run_edsc(args);
   EXPECT_EQ(r.status, 1) << r.output.substr(0, 500);
@@ -188,13 +188,13 @@ TEST(Explain, JsonReadsBackAsTheTableSays) {
   const auto doc = nlohmann::json::parse(r.output.substr(0, error), nullptr, false);
   ASSERT_TRUE(doc.is_object()) << r.output.substr(0, 500);
   const auto& list = doc.at("statuses");
-  ASSERT_EQ(list.size(), args.size() - 2);
+  ASSERT_EQ(list.size(), args.size() - 3);
   const auto text = [](const nlohmann::json& j, std::string_view s) {
     return s.empty() ? j.is_null() : j.is_string() && j.get<std::string>() == s;
   };
   for (std::size_t i = 0; i + 1 < list.size(); ++i) {
     const auto& j = list[i];
-    const auto code = static_cast<std::uint16_t>(std::stoul(args[i + 2]));
+    const auto code = static_cast<std::uint16_t>(std::stoul(args[i + 3]));
     const auto e = code > 0xFF ? cip::explain(cip::extended_status{code})
                                : cip::explain(cip::general_status{static_cast<std::uint8_t>(code)});
     EXPECT_EQ(j.at("kind"), code > 0xFF ? "extended" : "general") << j;

@@ -58,6 +58,16 @@ std::optional<argument> argument_of(const std::string& kind, const fs::path& d, 
 // its device from --from or from four options the parser does not require.
 const std::map<std::string, std::vector<std::string>> extra_options{{"new", {"--from", "json"}}};
 
+// Commands that need an EDS of another kind than dev.eds (a DeviceNet node):
+// `connection` needs an EtherNet/IP connection to print.
+const std::map<std::string, std::string> eds_of_command{{"connection", "eip.eds"}};
+std::optional<argument> argument_for(const std::string& command, const std::string& kind, const fs::path& d,
+                                     const std::string& device) {
+  if (const auto it = eds_of_command.find(command); kind == "eds" && it != eds_of_command.end())
+    return argument{(d / "in" / it->second).string(), {d / "in" / it->second}};
+  return argument_of(kind, d, device);
+}
+
 struct writer {
   std::string name;  // "probe --upload-eds"
   // The arguments that write to `target`, given the scratch folder.
@@ -100,7 +110,7 @@ std::vector<writer> writers(const std::string& device) {
         auto args = words_of(path);
         for (const auto& [spelling, kind] : needs) {
           if (!spelling.empty()) args.push_back(spelling);
-          args.push_back(argument_of(kind, d, device)->value);
+          args.push_back(argument_for(path, kind, d, device)->value);
         }
         args.push_back(target_option.spelling());
         args.push_back(target);
@@ -109,7 +119,7 @@ std::vector<writer> writers(const std::string& device) {
       w.inputs = [=](const fs::path& d) {
         std::vector<fs::path> reads;
         for (const auto& [spelling, kind] : needs) {
-          const auto a = argument_of(kind, d, device);
+          const auto a = argument_for(path, kind, d, device);
           reads.insert(reads.end(), a->reads.begin(), a->reads.end());
         }
         return reads;
@@ -132,6 +142,7 @@ class OutputPolicy : public Cli {
     fs::copy(eds / "networks" / "thesis.toml", dir_ / "in" / "networks" / "thesis.toml");
     fs::copy(eds / "nodes", dir_ / "in" / "nodes");
     fs::copy(eds / "rightsight-42ef-3byte.eds", dir_ / "in" / "rightsight-42ef-3byte.eds");
+    fs::copy(fs::path(EDSC_PROJECT_DIR) / "tests" / "docs" / "workspace" / "device.eds", dir_ / "in" / "eip.eds");
   }
 
   // Every input's bytes, to show none of them changed.
