@@ -215,9 +215,9 @@ std::string_view role_words(path_role r) {
 
 std::string_view format_words(std::uint8_t f) {
   switch (f) {
-    case 0: return "modeless";
-    case 1: return "format 1 (meaning unconfirmed)";
-    case 2: return "format 2 (meaning unconfirmed)";
+    case 0: return "modeless (pure data)";
+    case 1: return "zero-length data (unconfirmed)";
+    case 2: return "format 2 (unconfirmed)";
     case 3: return "heartbeat";
     case 4: return "32-bit run/idle header";
     case 5: return "CIP Safety";

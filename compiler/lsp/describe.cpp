@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "base/plural.hpp"
+#include "connections/settings.hpp"
 #include "model/decode.hpp"
 #include "schema/cip_types.hpp"
 
@@ -32,18 +33,6 @@ std::string_view class_words(schema::type_class c) {
   return "";
 }
 
-std::string_view real_time_format(unsigned f) {
-  switch (f) {
-    case 0: return "modeless (pure data)";
-    case 1: return "zero-length data (unconfirmed)";
-    case 2: return "format 2 (unconfirmed)";
-    case 3: return "heartbeat";
-    case 4: return "32-bit run/idle header";
-    case 5: return "CIP Safety";
-    default: return "invalid";
-  }
-}
-
 std::string direction(std::string_view name, const model::direction_params& d) {
   std::string types, prios;
   add(types, d.type_null, "null");
@@ -58,7 +47,7 @@ std::string direction(std::string_view name, const model::direction_params& d) {
   add(sizes, d.fixed, "fixed");
   add(sizes, d.variable, "variable");
   return fmt::format("- {}: {} size; {}; {}; priority {}\n", name, sizes.empty() ? "no" : sizes,
-                     real_time_format(d.real_time_format), types.empty() ? "no connection type" : types,
+                     connections::format_words(d.real_time_format), types.empty() ? "no connection type" : types,
                      prios.empty() ? "none" : prios);
 }
 
