@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "cip/message.hpp"
+#include "connections/fields.hpp"
 #include "facts/header_parts.hpp"
 
 namespace edsc::connections {
@@ -42,24 +43,14 @@ result<cip::bytes, std::string> encode_path(const model::device& dev, const mode
 }
 
 // The configuration a scanner sends by default: each member parameter's
-// default, little-endian, where members are whole bytes; zeros elsewhere.
+// default at its bits, encoded as its type; zeros where no parameter (or a
+// default that does not fit its member) says otherwise.
 cip::bytes config_data(const model::device& dev, const model::assembly* a, std::uint32_t size) {
   cip::bytes out(size, 0);
   if (a == nullptr) return out;
-  std::size_t at = 0;
-  for (const auto& m : a->members) {
-    const auto bits = emit::number_or_param_default(dev, m.size).value_or(0);
-    if (bits % 8 != 0) return cip::bytes(size, 0);
-    const auto* r = m.ref.as_ref();
-    std::uint64_t v = 0;
-    if (r != nullptr && r->kind == schema::ref_kind::param && r->resolved() && r->target < dev.params.size()) {
-      const auto& d = dev.params[r->target].default_value;
-      if (d.is_integer()) v = static_cast<std::uint64_t>(d.as_int());
-    }
-    // Bytes past the 8 of a 64-bit default are zero (a shift by 64 or more is undefined).
-    for (std::uint64_t i = 0; i < bits / 8 && at < out.size(); ++i, ++at)
-      out[at] = i < 8 ? static_cast<std::uint8_t>(v >> (8 * i)) : 0;
-  }
+  for (const auto& f : fields_of(dev, *a, size))
+    if (const auto v = number_of(dev.params[f.param_index].default_value))
+      if (const auto raw = encode_field(f, *v)) put_bits(out, f.bit, f.bits, *raw);
   return out;
 }
 

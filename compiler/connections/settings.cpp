@@ -1,5 +1,7 @@
 #include "connections/settings.hpp"
 
+#include <algorithm>
+
 #include "facts/header_parts.hpp"
 
 namespace edsc::connections {
@@ -99,7 +101,34 @@ std::vector<path_part> path_of(const model::device& dev, const model::epath& p, 
   return out;
 }
 
-connection_setting setting_of(const model::device& dev, const connection_plan& p) {
+std::string enum_text_of(const model::device& dev, const model::param& p, const number& v) {
+  if (p.enum_index >= dev.enums.size()) return {};
+  for (const auto& pair : dev.enums[p.enum_index].pairs)
+    if (const auto n = number_of(pair.val);
+        n && pair.text.ok() && (n->is_real ? n->real == v.real : n->integer == v.integer) && n->is_real == v.is_real)
+      return std::string(pair.text.text);
+  return {};
+}
+
+// The configuration data read back field by field: what the bytes hold.
+std::vector<config_field> config_fields_of(const model::device& dev, const model::connection& c, const cip::bytes& data,
+                                           const std::vector<std::uint32_t>& set_params) {
+  std::vector<config_field> out;
+  const auto* a = emit::assembly_of(dev, c.target_config_format);
+  if (a == nullptr || data.empty()) return out;
+  for (auto& f : fields_of(dev, *a, data.size())) {
+    config_field cf;
+    cf.value = decode_field(f, get_bits(data, f.bit, f.bits));
+    cf.enum_text = enum_text_of(dev, dev.params[f.param_index], cf.value);
+    cf.set = std::find(set_params.begin(), set_params.end(), f.param_index) != set_params.end();
+    cf.field = std::move(f);
+    out.push_back(std::move(cf));
+  }
+  return out;
+}
+
+connection_setting setting_of(const model::device& dev, const connection_plan& p,
+                              const std::vector<std::uint32_t>& set_params) {
   const auto& c = *p.conn;
   const auto& f = p.facts;
   connection_setting s;
@@ -126,12 +155,14 @@ connection_setting setting_of(const model::device& dev, const connection_plan& p
   s.to.rpi = rpi_of(dev, c.to_rpi, c.ot_rpi, p.to_rpi_us);
   if (f.config_size > 0) s.config_instance = f.config_instance;
   s.config_data = p.config_data;
+  if (s.config_instance != 0) s.config_fields = config_fields_of(dev, c, s.config_data, set_params);
   s.large = p.request.large;
   s.cannot_express = p.needs_owner ? std::string() : p.not_openable;
   if (s.cannot_express.empty()) {
-    if (auto r = cip::encode_forward_open(p.request))
+    if (auto r = cip::encode_forward_open(p.request)) {
       s.request = std::move(r.value());
-    else
+      s.connection_path = p.request.path;
+    } else
       s.cannot_express = "its Forward_Open cannot be encoded: " + r.error().what();
   }
   return s;
@@ -151,10 +182,11 @@ void link_owners(std::vector<connection_setting>& all) {
 
 }  // namespace
 
-std::vector<connection_setting> describe_connections(const model::device& dev) {
+std::vector<connection_setting> describe_connections(const model::device& dev,
+                                                     const std::vector<std::uint32_t>& set_params) {
   std::vector<connection_setting> out;
   for (const auto& p : plan_connections(dev))
-    if (p.conn != nullptr) out.push_back(setting_of(dev, p));
+    if (p.conn != nullptr) out.push_back(setting_of(dev, p, set_params));
   link_owners(out);
   return out;
 }

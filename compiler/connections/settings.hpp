@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "connections/fields.hpp"
 #include "connections/plan.hpp"
 
 namespace edsc::connections {
@@ -58,6 +59,15 @@ struct path_part {
   cip::bytes bytes;  // empty when the segment cannot be encoded
 };
 
+// One field of the configuration data: a member parameter, its place and the
+// value the data holds (its default, or what --set chose).
+struct config_field {
+  data_field field;
+  number value;
+  std::string enum_text;  // the EnumN text of the value, where it has one
+  bool set = false;       // chosen with --set
+};
+
 struct connection_setting {
   std::uint32_t number = 0;
   std::string name;
@@ -78,12 +88,16 @@ struct connection_setting {
   direction_setting ot, to;
   std::uint32_t config_instance = 0;
   cip::bytes config_data;
+  std::vector<config_field> config_fields;
   bool large = false;          // a size over 511: Large_Forward_Open
+  cip::bytes connection_path;  // the request's path field: key, application path, configuration data segment
   cip::bytes request;          // the whole Forward_Open; serial numbers zero
   std::string cannot_express;  // why edsc cannot give the request; empty: it can
 };
 
-[[nodiscard]] std::vector<connection_setting> describe_connections(const model::device& dev);
+// `set_params`: indices into device::params whose defaults --set replaced.
+[[nodiscard]] std::vector<connection_setting> describe_connections(const model::device& dev,
+                                                                   const std::vector<std::uint32_t>& set_params = {});
 
 // Words for the settings, shared by every rendering.
 [[nodiscard]] std::string_view kind_words(const model::app_kind& k);

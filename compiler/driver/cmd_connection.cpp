@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "connections/overrides.hpp"
 #include "connections/settings.hpp"
 #include "diag/render_text.hpp"
 #include "driver/choice.hpp"
@@ -23,6 +24,7 @@ namespace {
 struct connection_cli {
   std::string input, stdin_name, which, output = "-";
   std::string format = "text";
+  std::vector<std::string> sets;  // --set NAME=VALUE, in order
 };
 
 bool same_name(std::string_view a, std::string_view b) {
@@ -64,6 +66,54 @@ bool report_syntax(const source_file& src, const diagnostics& diags) {
   return !out.empty();
 }
 
+void print_diags(const source_file& src, const diagnostics& diags) {
+  std::string out;
+  for (const auto& d : diags) render_text(src, d, text_style{use_color(color_mode::auto_detect, stderr)}, out);
+  write_all(stderr, out);
+}
+
+diag_id id_of(const connections::set_refusal& r) {
+  if (r.fault == connections::set_fault::unknown_param) return diag_id::settings_unknown_parameter;
+  switch (r.value) {
+    case connections::value_fault::type: return diag_id::settings_value_type;
+    case connections::value_fault::limits: return diag_id::settings_value_limits;
+    case connections::value_fault::enumeration: return diag_id::settings_value_enum;
+  }
+  return diag_id::settings_value_type;
+}
+
+// The device with the --set values as defaults; its diagnostics added to `diags`.
+std::optional<connections::applied_sets> apply_cli_sets(const model::device& dev, const std::vector<std::string>& args,
+                                                        diagnostics& diags) {
+  std::vector<connections::param_set> sets;
+  for (const auto& a : args) sets.push_back(*connections::parse_set(a));  // checked by the option's validator
+  auto applied = connections::apply_sets(dev, sets);
+  if (!applied) {
+    for (const auto& r : applied.error()) diags.push_back(make_diagnostic(id_of(r), r.at, r.message));
+    return std::nullopt;
+  }
+  for (const auto& w : applied->warnings) diags.push_back(make_diagnostic(id_of(w), w.at, w.message));
+  return std::move(*applied);
+}
+
+// A --set parameter none of the connections printed reads changes nothing: probably a slip.
+void warn_unused(const connections::applied_sets& applied, const std::vector<connections::connection_setting>& shown,
+                 diagnostics& diags) {
+  for (const auto& v : applied.sets) {
+    bool used = false;
+    for (const auto& s : shown)
+      for (const auto& c : applied.dev.connections)
+        if (c.number == s.number && connections::uses_param(applied.dev, c, v.param_index)) used = true;
+    if (used) continue;
+    const auto& p = applied.dev.params[v.param_index];
+    diags.push_back(make_diagnostic(
+        diag_id::settings_set_unused, p.from.where,
+        fmt::format("--set Param{}: no connection printed reads it (it is in none of their assemblies, RPI, size or "
+                    "path fields), so it changes nothing",
+                    p.number)));
+  }
+}
+
 int run_connection(const connection_cli& cli) {
   if (!stdin_filename_used(io::is_stdin(cli.input), cli.stdin_name)) return exit_failure;
   if (refuse_input_as_output(cli.output, {cli.input}) != exit_ok) return exit_failure;
@@ -77,8 +127,17 @@ int run_connection(const connection_cli& cli) {
     return exit_findings;
   }
   diagnostics diags;
-  const auto dev = lower(parsed.tree, diags);
-  auto all = connections::describe_connections(dev);
+  const auto lowered = lower(parsed.tree, diags);
+  diagnostics set_diags;
+  const auto applied = apply_cli_sets(lowered, cli.sets, set_diags);
+  if (!applied) {
+    print_diags(src, set_diags);
+    return exit_findings;
+  }
+  const auto& dev = applied->dev;
+  std::vector<std::uint32_t> set_params;
+  for (const auto& v : applied->sets) set_params.push_back(v.param_index);
+  auto all = connections::describe_connections(dev, set_params);
   if (all.empty())
     return report(src, diag_id::settings_no_connections, {0, 0},
                   "no ConnectionN in [Connection Manager]: the EDS describes no EtherNet/IP connection");
@@ -92,8 +151,11 @@ int run_connection(const connection_cli& cli) {
                     fmt::format("Connection{} \"{}\": no settings: {}", it->number, it->name, it->cannot_express));
     all = {*it};
   }
-  const auto text =
-      cli.format == "json" ? emit::render_connections_json(all, src) : emit::render_connections_text(all, src);
+  warn_unused(*applied, all, set_diags);
+  print_diags(src, set_diags);
+  const auto text = cli.format == "json" ? emit::render_connections_json(all, src)
+                    : cli.format == "c"  ? emit::render_connections_c(all, src)
+                                         : emit::render_connections_text(all, src);
   return write_result(cli.output, text);
 }
 
@@ -107,11 +169,21 @@ void register_connection(CLI::App& app, command_action& run) {
   takes(cmd->add_option("connection", cli->which, "One connection: its number N (or ConnectionN) or its name"),
         arg_kind::text);
   add_stdin_filename(cmd, cli->stdin_name);
-  add_choice(cmd, "--format", cli->format, {"text", "json"}, "What to write: text for a person (default), or JSON");
+  takes(cmd->add_option("--set", cli->sets,
+                        "Use VALUE for a parameter (its name or ParamN) instead of its default: NAME=VALUE, repeatable")
+            ->allow_extra_args(false)
+            ->check([](const std::string& a) {
+              auto s = connections::parse_set(a);
+              return s ? std::string() : s.error();
+            }),
+        arg_kind::text);
+  add_choice(cmd, "--format", cli->format, {"text", "json", "c"},
+             "What to write: text for a person (default), JSON, or a C header with each request's bytes");
   takes(cmd->add_option("-o,--output", cli->output, "Write here ('-': standard output, the default)"),
         arg_kind::output);
   add_example(cmd, "edsc connection device.eds", "every connection's settings");
   add_example(cmd, "edsc connection device.eds 1 --format json", "Connection1 for a program to read");
+  add_example(cmd, "edsc connection device.eds 1 --set Param3=100", "Connection1 with Param3 set to 100");
   cmd->callback([&run, cli] { run = [cli] { return run_connection(*cli); }; });
 }
 

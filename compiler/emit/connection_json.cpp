@@ -73,6 +73,19 @@ json key_json(const connection_setting& s) {
           {"compatible", k.compatible}};
 }
 
+json config_json(const connection_setting& s) {
+  json fields = json::array();
+  for (const auto& f : s.config_fields)
+    fields.push_back({{"param", f.field.param},
+                      {"name", f.field.name},
+                      {"bit", f.field.bit},
+                      {"bits", f.field.bits},
+                      {"value", f.value.is_real ? json(f.value.real) : json(f.value.integer)},
+                      {"enum_text", f.enum_text.empty() ? json(nullptr) : json(f.enum_text)},
+                      {"set", f.set}});
+  return {{"instance", s.config_instance}, {"data_hex", hex_bytes(s.config_data)}, {"fields", fields}};
+}
+
 json one_json(const connection_setting& s, const source_file& src) {
   json j{{"number", s.number},
          {"name", s.name},
@@ -91,10 +104,9 @@ json one_json(const connection_setting& s, const source_file& src) {
   j["key"] = key_json(s);
   j["o_to_t"] = direction_json(s.ot);
   j["t_to_o"] = direction_json(s.to);
-  j["configuration"] = s.config_instance == 0
-                           ? json(nullptr)
-                           : json{{"instance", s.config_instance}, {"data_hex", hex_bytes(s.config_data)}};
+  j["configuration"] = s.config_instance == 0 ? json(nullptr) : config_json(s);
   j["large_forward_open"] = s.large;
+  j["connection_path_hex"] = s.request.empty() ? json(nullptr) : json(hex_bytes(s.connection_path));
   j["forward_open_hex"] = s.request.empty() ? json(nullptr) : json(hex_bytes(s.request));
   return j;
 }

@@ -10,6 +10,7 @@
 
 #include "cip/encap.hpp"
 #include "cip/request.hpp"
+#include "connections/fields.hpp"
 #include "connections/plan.hpp"
 #include "model/device.hpp"
 #include "schema/cip_types.hpp"
@@ -20,12 +21,7 @@ enum class assembly_role : std::uint8_t { input, output, config, other };
 
 // A member of an AssemN that names a ParamN: what `--inputs` and the
 // control on standard input set by name (inputs.cpp).
-struct input_field {
-  std::string name;                 // the parameter's name, as the EDS writes it
-  std::uint32_t param = 0;          // N of ParamN, also accepted as a name ("Param3")
-  std::uint32_t bit = 0, bits = 0;  // where in the data, from the member sizes before it
-  bool is_signed = false, is_real = false;
-};
+using input_field = connections::data_field;
 
 struct assembly_instance {
   std::uint32_t instance = 0;
@@ -55,6 +51,9 @@ struct connection_point {
   std::vector<cip::path_segment> segments;                  // the application path, widths forgotten
   model::app_type kind = model::app_type::exclusive_owner;  // as the plan classifies it
   rpi_limits ot_rpi, to_rpi;
+  // The configuration assembly's member parameters: configuration data a
+  // Forward_Open carries is held to their type, limits and EnumN.
+  std::vector<connections::data_field> config_fields;
 };
 
 // One ParamN served as Parameter object (class 0x0F) instance N, its
@@ -90,7 +89,8 @@ struct unserved {
 };
 
 struct device {
-  cip::identity id;  // attributes 1-7; serial from the command line
+  const model::device* eds = nullptr;  // what the points' plans point into; outlives the simulator
+  cip::identity id;                    // attributes 1-7; serial from the command line
   std::vector<assembly_instance> assemblies;
   std::vector<connection_point> points;
   std::vector<unserved> skipped;

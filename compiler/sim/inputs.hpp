@@ -16,13 +16,9 @@ namespace edsc::sim {
 // The assembly a key names: "100" (the instance) or "Assem5" (the instance AssemN describes).
 [[nodiscard]] assembly_instance* find_assembly(device& d, std::string_view key);
 
-struct field_number {
-  bool is_real = false;
-  std::int64_t integer = 0;
-  double real = 0;
-};
+using field_number = connections::number;
 // A number as written on a control line: 12, -3, 0x1F, 1.5.
-[[nodiscard]] std::optional<field_number> parse_number(std::string_view text);
+using connections::parse_number;
 
 // Why a value or a line is refused: the rule it breaks (sim-inputs-*,
 // docs/rules.md) and the message for the user.

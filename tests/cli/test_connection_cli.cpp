@@ -102,5 +102,58 @@ TEST_F(ConnectionCli, OutputGoesThroughTheOutputPolicy) {
   EXPECT_EQ(read_bytes(in), read_bytes(opener()));
 }
 
+// --set: the value in the configuration data and the request, each member
+// that names the parameter (Param3 stands in all ten of Assem151's).
+TEST_F(ConnectionCli, SetPutsTheValueInTheDataAndTheRequest) {
+  const auto r = run_edsc({"connection", opener(), "1", "--set", "config data=0x5A", "--format", "json"});
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto c = nlohmann::json::parse(r.output)["connections"][0];
+  EXPECT_EQ(c["configuration"]["data_hex"], "5A 5A 5A 5A 5A 5A 5A 5A 5A 5A");
+  ASSERT_EQ(c["configuration"]["fields"].size(), 10u);
+  EXPECT_EQ(c["configuration"]["fields"][9]["value"], 0x5A);
+  EXPECT_EQ(c["configuration"]["fields"][9]["bit"], 72);
+  EXPECT_EQ(c["configuration"]["fields"][9]["set"], true);
+  const std::string request = c["forward_open_hex"];
+  EXPECT_EQ(request.substr(request.size() - 35), "80 05 5A 5A 5A 5A 5A 5A 5A 5A 5A 5A");
+  // The RPI parameter (Param4) moves the RPI asked.
+  const auto rpi = run_edsc({"connection", opener(), "1", "--set", "RPI=40000", "--format", "json"});
+  EXPECT_EQ(nlohmann::json::parse(rpi.output)["connections"][0]["o_to_t"]["rpi"]["us"], 40000);
+}
+
+TEST_F(ConnectionCli, ASetValueTheParameterRefusesIsLocatedAndNothingIsPrinted) {
+  const struct {
+    const char* set;
+    const char* where;
+  } cases[] = {
+      {"Param3=256",
+       ":57:17: error: --set Param3: 256 does not fit BYTE (0..255) (Param3's data type) "
+       "[settings-value-type]"},
+      {"Param4=10000", ":75:17: error: --set Param4: 10000 is below Param4's minimum 20000 [settings-value-limits]"},
+      {"Speed=1",
+       ":26:1: error: --set Speed: no parameter is named \"Speed\" (name one as ParamN or by its name) "
+       "[settings-unknown-parameter]"},
+  };
+  for (const auto& c : cases) {
+    const auto r = run_edsc({"connection", opener(), "1", "--set", c.set, "--set", "Param3=1"});
+    EXPECT_EQ(r.status, 1) << c.set;
+    EXPECT_NE(r.output.find(c.where), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("request"), std::string::npos) << "nothing half-printed";
+  }
+  const auto usage = run_edsc({"connection", opener(), "--set", "Param3"});
+  EXPECT_EQ(usage.status, 2);
+  EXPECT_NE(usage.output.find("'Param3': write NAME=VALUE"), std::string::npos) << usage.output;
+}
+
+TEST_F(ConnectionCli, ASetNoConnectionPrintedReadsIsWarnedAbout) {
+  // Connection2 (input only) has no configuration: Param3 changes nothing there.
+  const auto r = run_edsc({"connection", opener(), "2", "--set", "Param3=1"});
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(r.output.find(":53:9: warning: --set Param3: no connection printed reads it"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("Connection2 \"Input Only\""), std::string::npos);
+  const auto quiet = run_edsc({"connection", opener(), "1", "--set", "Param3=1"});
+  EXPECT_EQ(quiet.output.find("warning"), std::string::npos) << quiet.output;
+}
+
 }  // namespace
 }  // namespace edsc::cli_test
