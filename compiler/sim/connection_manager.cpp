@@ -23,16 +23,17 @@ using cip::bytes;
 // connection it was held against, the reason in words).
 bytes refuse(state& s, const cip::request& q, const cip::forward_open_request& fo, const refusal& r,
              std::uint32_t connection = 0) {
-  std::vector<std::uint16_t> add{cip::code(r.status)};
+  const auto status = r.bad_config_element ? general::invalid_attribute_value : general::connection_failure;
+  std::vector<std::uint16_t> add{r.bad_config_element ? *r.bad_config_element : cip::code(r.status)};
   if (r.size_accepted) add.push_back(*r.size_accepted);
   log_event(s, "refused",
             fmt::format("\"serial\":{},\"originator_vendor\":{},\"originator_serial\":{},\"connection\":{},"
                         "\"status\":\"0x{:02X}\",\"extended\":\"0x{:04X}\",\"why\":{}",
-                        fo.connection_serial, fo.originator_vendor, fo.originator_serial, connection,
-                        cip::code(general::connection_failure), cip::code(r.status), nlohmann::json(r.why).dump()));
-  // The extended status and at most one word after it: always fits.
+                        fo.connection_serial, fo.originator_vendor, fo.originator_serial, connection, cip::code(status),
+                        add.front(), nlohmann::json(r.why).dump()));
+  // One status word and at most one after it: always fits.
   return cip::encode_reply_with_status(
-             q.service, general::connection_failure, add,
+             q.service, status, add,
              cip::connection_triple_data(fo.connection_serial, fo.originator_vendor, fo.originator_serial))
       .value();
 }

@@ -124,6 +124,8 @@ void add_points(const model::device& dev, device& d) {
     add_assembly(d, f.input_instance, f.input_size, assembly_role::input);
     add_assembly(d, f.output_instance, f.output_size, assembly_role::output);
     add_assembly(d, f.config_instance, f.config_size, assembly_role::config);
+    if (const auto* a = emit::assembly_of(dev, p.conn->target_config_format); a != nullptr && f.config_size > 0)
+      cp.config_fields = connections::fields_of(dev, *a, f.config_size);
     cp.plan = std::move(p);
     d.points.push_back(std::move(cp));
   }
@@ -138,6 +140,7 @@ void add_points(const model::device& dev, device& d) {
 
 device build_device(const model::device& dev, std::uint32_t serial) {
   device d;
+  d.eds = &dev;
   d.id = identity_of(dev.identity, serial);
   add_points(dev, d);
   for (const auto& t : connections::plan_assemblies(dev))

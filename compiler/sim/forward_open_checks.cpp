@@ -1,6 +1,7 @@
 // A Forward_Open held against one ConnectionN of the EDS: the statuses
 // ETHERNETIP_LIVE.md §4 lists (checked against OpENer's answers on the same
 // requests, docs/sim.md), each with the reason in words for the log.
+#include <algorithm>
 #include <initializer_list>
 #include <utility>
 #include <vector>
@@ -120,6 +121,30 @@ std::optional<refusal> check_key(const cip::identity& id, const cip::electronic_
   return std::nullopt;
 }
 
+namespace {
+
+// Each member parameter's value in the configuration data against its type,
+// limits and EnumN; the first at fault is refused with its element's index.
+std::optional<refusal> check_config(const model::device& eds, const connection_point& p, cip::byte_view config) {
+  const cip::bytes data(config.begin(), config.end());
+  for (const auto& f : p.config_fields) {
+    if (std::size_t{f.bit} + f.bits > data.size() * 8) break;
+    const auto v = connections::decode_field(f, connections::get_bits(data, f.bit, f.bits));
+    if (auto ok = connections::check_value(eds, eds.params[f.param_index], v); !ok) {
+      refusal r{ext::invalid_configuration_size,
+                {},
+                {},
+                static_cast<std::uint16_t>(std::min<std::uint32_t>(f.member, 0xFFFF))};
+      r.why = fmt::format("configuration data element {} (Param{}{}): {}", f.member, f.param,
+                          f.name.empty() ? "" : fmt::format(" \"{}\"", f.name), ok.error().why);
+      return r;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::optional<refusal> check_point(const state& s, const connection_point& p, const cip::forward_open_request& fo,
                                    std::optional<cip::byte_view> config) {
   const auto& c = *p.plan.conn;
@@ -160,6 +185,8 @@ std::optional<refusal> check_point(const state& s, const connection_point& p, co
         {static_cast<std::uint16_t>((f.config_size + 1) / 2)},
         fmt::format("{} bytes of configuration data asked; Connection{} serves {} (configuration assembly {})",
                     config->size(), p.number, f.config_size, f.config_instance)};
+  if (config && s.dev.eds != nullptr)
+    if (auto r = check_config(*s.dev.eds, p, *config)) return r;
   if (s.connections.size() >= s.max_connections)
     return refusal{ext::out_of_connections,
                    {},

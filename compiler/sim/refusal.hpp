@@ -18,6 +18,11 @@ struct refusal {
   cip::extended_status status{};
   std::optional<std::uint16_t> size_accepted;  // the word after the extended status (0x0126-0x0128)
   std::string why;
+  // Configuration data the device does not take is refused with general
+  // status 0x09 and, as its one additional word, the index of the element
+  // at fault (the Connection Manager's status table; docs/sim.md): then
+  // `status` is not sent.
+  std::optional<std::uint16_t> bad_config_element = std::nullopt;
 };
 
 // [Device] against the key: zero fields match anything; exact keying wants
