@@ -1,7 +1,7 @@
 #pragma once
 // `edsc connection`'s outputs: the settings of each ConnectionN
-// (connections/settings.hpp) as text for a person and as JSON for a tool
-// (docs/connection.md gives the JSON's fields).
+// (connections/settings.hpp) as text for a person, as JSON for a tool
+// (docs/connection.md gives the JSON's fields) and as C.
 #include <string>
 #include <vector>
 
@@ -14,6 +14,11 @@ namespace edsc::emit {
                                                   const source_file& src);
 [[nodiscard]] std::string render_connections_json(const std::vector<connections::connection_setting>& all,
                                                   const source_file& src);
+
+// A C header for an originator of one's own: each request as bytes, the
+// offsets it fills in, a struct of the settings (emit/connection_c.cpp).
+[[nodiscard]] std::string render_connections_c(const std::vector<connections::connection_setting>& all,
+                                               const source_file& src);
 
 // Bytes as two-digit upper-case hex separated by blanks ("20 04 24 01").
 [[nodiscard]] std::string hex_bytes(const cip::bytes& b);
