@@ -1,11 +1,16 @@
 // Connections on the datasheet: DeviceNet [IO_Info] per predefined connection
 // type and data set, EtherNet/IP ConnectionN with its bit fields in words, and
 // the ProxyConnectN / ProxiedConnectN entries apart.
-// Sizes and assembly instances of the real connections come from the C
-// header's facts, so the page and the header never disagree.
+// A ConnectionN is shown as `edsc connection` shows it, from the same
+// settings and the same words (emit/connection_summary.hpp), so the page, the
+// command and the C header never disagree.
+#include <algorithm>
+
 #include <fmt/format.h>
 
+#include "connections/settings.hpp"
 #include "doc/sheet_parts.hpp"
+#include "emit/connection_summary.hpp"
 #include "facts/header_view.hpp"
 
 namespace edsc::doc::detail {
@@ -129,13 +134,12 @@ std::string flow_text(const reader& r, std::string head, const value& format, co
                       const model::direction_params* bits) {
   std::string out = std::move(head);
   if (const auto* ref = format.as_ref()) join(out, "\n", r.ref_text(*ref));
-  if (rpi.present()) join(out, "\n", fmt::format("RPI {} µs", r.text(rpi)));
+  if (const auto* ref = rpi.as_ref())
+    join(out, "\n", "RPI " + r.ref_text(*ref));
+  else if (rpi.present())
+    join(out, "\n", fmt::format("RPI {} µs", r.text(rpi)));
   if (bits != nullptr) join(out, "\n", direction_text(*bits));
   return out;
-}
-
-std::string sized(std::uint32_t size, std::uint32_t instance) {
-  return instance != 0 ? fmt::format("{}, assembly {}", bytes_text(size), instance) : bytes_text(size);
 }
 
 // The columns of a ConnectionN-layout table; `first` names the entry column.
@@ -158,27 +162,53 @@ std::vector<cell> connection_row(const reader& r, const model::connection& c, st
           {r.path_text(c.path), r.line(c.path.from)}};
 }
 
-void eip_rows(const reader& r, const std::vector<emit::eip_connection_facts>& facts, sheet& s) {
-  auto& t = s.connections;
-  t.head = connection_head("Connection");
-  for (const auto& c : r.dev.connections) {
-    const emit::eip_connection_facts* f = nullptr;
-    for (const auto& x : facts)
-      if (x.number == c.number && f == nullptr) f = &x;
-    if (f == nullptr) continue;  // a repeated number: the header's first one wins, and so does the page
-    std::string config = f->config_size != 0 || f->config_instance != 0 ? bytes_text(f->config_size) : "";
-    if (f->config_instance != 0) config += fmt::format(", assembly {}", f->config_instance);
-    t.rows.push_back(connection_row(r, c, fmt::format("Connection{}", c.number),
-                                    sized(f->output_size, f->output_instance), sized(f->input_size, f->input_instance),
-                                    std::move(config)));
-  }
-}
-
-// A size field of a proxy entry as written: no header fact stands behind it.
+// A size field as written: no header fact stands behind it (a proxy entry,
+// a ConnectionN whose bit fields are no numbers).
 std::string size_text(const reader& r, const value& v) {
   if (v.is_integer()) return bytes_text(v.as_uint());
   if (const auto* ref = v.as_ref()) return r.ref_text(*ref);
   return r.text(v);
+}
+
+// A direction's lines as `edsc connection` prints them (emit/connection_summary.hpp).
+std::string direction_cell(const emit::direction_summary& d) {
+  std::string out = d.size;
+  for (const auto* line : {&d.point, &d.types, &d.rpi})
+    if (!line->empty()) join(out, "\n", *line);
+  return out;
+}
+
+// A ConnectionN as `edsc connection` reads it: kind, transport, owners,
+// sizes with their header bytes, RPI range and default, instances and
+// configuration, in the command's words.
+std::vector<cell> setting_row(const reader& r, const model::connection& c, const connections::connection_setting& s) {
+  const auto words = emit::summarize(s);
+  std::string kind = words.kind;
+  join(kind, "\n", words.transport);
+  if (!words.owner_label.empty()) join(kind, "\n", words.owner_label + " " + words.owners);
+  if (!words.note.empty()) join(kind, "\n", "no request: " + words.note);
+  return {{fmt::format("Connection{}", c.number), r.line(c.from), cell_style::code},
+          r.at(c.name),
+          {std::move(kind), r.line(c.trigger.from)},
+          {direction_cell(words.ot), r.line(c.ot_size.from)},
+          {direction_cell(words.to), r.line(c.to_size.from)},
+          {words.configuration},
+          {r.path_text(c.path), r.line(c.path.from)}};
+}
+
+void eip_rows(const reader& r, sheet& s) {
+  auto& t = s.connections;
+  t.head = connection_head("Connection");
+  const auto settings = connections::describe_connections(r.dev);
+  for (const auto& c : r.dev.connections) {
+    const auto it = std::find_if(settings.begin(), settings.end(), [&](const auto& x) {
+      return x.number == c.number && x.at.begin == c.from.where.begin;
+    });
+    if (it == settings.end()) continue;  // a repeated number: the command's first one wins, and so does the page
+    t.rows.push_back(c.decoded ? setting_row(r, c, *it)
+                               : connection_row(r, c, fmt::format("Connection{}", c.number), size_text(r, c.ot_size),
+                                                size_text(r, c.to_size), ""));
+  }
 }
 
 // "proxy: 4 bytes\nParam3 (...)": one configuration pair, empty when not given.
@@ -210,7 +240,7 @@ void build_connections(const reader& r, sheet& s) {
   if (facts.devicenet) devicenet_rows(r, *facts.devicenet, s);
   io_data_rows(r, r.dev.io, "", s);
   io_data_rows(r, r.dev.variant_io, "Variant ", s);
-  if (!r.dev.connections.empty()) eip_rows(r, facts.connections, s);
+  if (!r.dev.connections.empty()) eip_rows(r, s);
   proxy_rows(r, s);
 }
 

@@ -11,6 +11,7 @@
 #include "diag/render_text.hpp"
 #include "driver/choice.hpp"
 #include "driver/commands.hpp"
+#include "driver/connection_choice.hpp"
 #include "driver/output.hpp"
 #include "emit/connection_render.hpp"
 #include "io/read_file.hpp"
@@ -27,44 +28,10 @@ struct connection_cli {
   std::vector<std::string> sets;  // --set NAME=VALUE, in order
 };
 
-bool same_name(std::string_view a, std::string_view b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
-         });
-}
-
-// `3`, `Connection3` or a name (field 13, any case).
-bool names(const connections::connection_setting& s, std::string_view which) {
-  std::string_view n = which;
-  if (n.size() > 10 && same_name(n.substr(0, 10), "connection")) n.remove_prefix(10);
-  if (!n.empty() && n.find_first_not_of("0123456789") == std::string_view::npos && n.size() <= 9)
-    return std::stoul(std::string(n)) == s.number;
-  return same_name(which, s.name);
-}
-
-std::string listed(const std::vector<connections::connection_setting>& all) {
-  std::string out;
-  for (const auto& s : all) out += fmt::format("{}Connection{} \"{}\"", out.empty() ? "" : ", ", s.number, s.name);
-  return out;
-}
-
-int report(const source_file& src, diag_id id, span where, std::string message) {
-  std::string out;
-  render_text(src, make_diagnostic(id, where, std::move(message)),
-              text_style{use_color(color_mode::auto_detect, stderr)}, out);
-  write_all(stderr, out);
-  return exit_findings;
-}
-
-// The syntax errors of a file whose connections cannot be read reliably.
-bool report_syntax(const source_file& src, const diagnostics& diags) {
-  std::string out;
-  for (const auto& d : diags)
-    if (d.level == severity::error && rule_of(d.id).group == "syntax")
-      render_text(src, d, text_style{use_color(color_mode::auto_detect, stderr)}, out);
-  write_all(stderr, out);
-  return !out.empty();
-}
+using connection_choice::listed;
+using connection_choice::names;
+using connection_choice::report;
+using connection_choice::report_syntax;
 
 void print_diags(const source_file& src, const diagnostics& diags) {
   std::string out;

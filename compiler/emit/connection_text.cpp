@@ -1,27 +1,16 @@
 // The text of `edsc connection`: one block per ConnectionN, each line a
-// setting a scanner asks for, with the EDS field it comes from.
+// setting a scanner asks for, with the EDS field it comes from. The words
+// are connection_summary.hpp's, which the datasheet and the hover show too.
 #include <fmt/format.h>
 
 #include "emit/connection_render.hpp"
+#include "emit/connection_summary.hpp"
 
 namespace edsc::emit {
 
 namespace {
 
 using namespace connections;
-
-std::string joined(const std::vector<std::string>& words, std::string_view sep = ", ") {
-  std::string out;
-  for (const auto& w : words) out += (out.empty() ? "" : std::string(sep)) + w;
-  return out;
-}
-
-template <class T, class F>
-std::string words_of(const std::vector<T>& xs, F&& word) {
-  std::vector<std::string> w;
-  for (const auto& x : xs) w.emplace_back(word(x));
-  return w.empty() ? "none" : joined(w);
-}
 
 // Long byte strings wrap at 16 bytes, aligned under the first.
 std::string wrapped_hex(const cip::bytes& b, std::size_t indent) {
@@ -34,49 +23,18 @@ std::string wrapped_hex(const cip::bytes& b, std::size_t indent) {
   return out;
 }
 
-std::string size_words(const direction_setting& d) {
-  if (!d.used) return "none (null connection)";
-  std::string s = fmt::format("{} data", d.data_size);
-  if (d.sequence) s += " + 2 sequence";
-  if (d.run_idle) s += " + 4 run/idle";
-  s += fmt::format(" = {} bytes, {}", d.asked.size, d.asked.variable ? "variable" : "fixed");
-  if (d.fixed && d.variable) s += " (fixed or variable offered)";
-  return s;
-}
-
-std::string rpi_words(const rpi_setting& r, std::string_view other) {
-  const auto asked = interval_words(r.asked_us);
-  switch (r.source) {
-    case rpi_source::number: return fmt::format("RPI {} (the EDS gives {} µs)", asked, r.asked_us);
-    case rpi_source::param: {
-      std::string range = "no limits given";
-      if (r.min_us && r.max_us)
-        range = fmt::format("from {} to {}", interval_words(*r.min_us), interval_words(*r.max_us));
-      else if (r.min_us)
-        range = fmt::format("at least {}", interval_words(*r.min_us));
-      else if (r.max_us)
-        range = fmt::format("at most {}", interval_words(*r.max_us));
-      return fmt::format("RPI {} (Param{}'s default; {})", asked, r.param, range);
-    }
-    case rpi_source::other: return fmt::format("RPI {} (field empty: the {} RPI)", asked, other);
-    case rpi_source::not_given: return fmt::format("RPI {} (the EDS gives none: edsc's default)", asked);
-  }
-  return "RPI " + asked;
-}
-
-void direction_text(std::string& out, std::string_view name, std::string_view other, const direction_setting& d) {
+void direction_text(std::string& out, std::string_view name, const direction_setting& d,
+                    const direction_summary& words) {
   constexpr std::size_t indent = 16;
-  out += fmt::format("  {:<13} {}\n", name, size_words(d));
+  out += fmt::format("  {:<13} {}\n", name, words.size);
   if (!d.used) return;
   const std::string pad(indent, ' ');
-  out += fmt::format("{}instance {}, {}\n", pad, d.instance, format_words(d.format));
-  out += fmt::format("{}{} (offered: {}), {} priority (offered: {})\n", pad, type_words(d.asked.type),
-                     words_of(d.types, type_words), priority_words(d.asked.priority),
-                     words_of(d.priorities, priority_words));
+  out += fmt::format("{}{}\n", pad, words.point);
+  out += fmt::format("{}{}\n", pad, words.types);
   out += pad + "network parameters ";
   out += d.word16 ? fmt::format("0x{:04X} (Forward_Open), ", *d.word16) : std::string("over 511 bytes: ");
   out += fmt::format("0x{:08X} (Large_Forward_Open)\n", d.word32);
-  out += fmt::format("{}{}\n", pad, rpi_words(d.rpi, other));
+  out += fmt::format("{}{}\n", pad, words.rpi);
 }
 
 void path_text(std::string& out, const connection_setting& s) {
@@ -88,18 +46,6 @@ void path_text(std::string& out, const connection_setting& s) {
     out += fmt::format("    {:<14}{} {}{}{}\n", hex_bytes(p.bytes), segment_words(p.kind), value,
                        role.empty() ? "" : ": ", role);
   }
-}
-
-void owner_text(std::string& out, const connection_setting& s) {
-  if (s.kind.type == model::app_type::exclusive_owner) return;
-  std::vector<std::string> names;
-  for (const auto n : s.owners) names.push_back(fmt::format("Connection{}", n));
-  if (s.kind.type == model::app_type::listen_only)
-    out += names.empty() ? fmt::format("  {:<13} none in this EDS produces input point {}\n", "needs", s.to.instance)
-                         : fmt::format("  {:<13} one of {} open first (same input point {})\n", "needs", joined(names),
-                                       s.to.instance);
-  else if (!names.empty())
-    out += fmt::format("  {:<13} input point {} with {}\n", "shares", s.to.instance, joined(names));
 }
 
 void key_text(std::string& out, const connection_setting& s) {
@@ -126,22 +72,18 @@ void config_text(std::string& out, const connection_setting& s) {
 
 void one_text(std::string& out, const connection_setting& s, const source_file& src) {
   const auto lc = src.position(s.at.begin);
+  const auto words = summarize(s);
   out += fmt::format("Connection{} \"{}\" (line {})\n", s.number, s.name, lc.line);
-  std::vector<std::string> classes;
-  for (const auto c : s.classes) classes.push_back(fmt::format("{}", c));
-  out += fmt::format("  {:<13} {}{}{}\n", "kind", kind_words(s.kind), s.kind.configured ? ", with configuration" : "",
-                     s.redundant_owner ? "; redundant owner offered" : "");
-  out += fmt::format("  {:<13} class {}, {} (offered: {}); transport byte 0x{:02X}\n", "transport",
-                     classes.empty() ? "none" : joined(classes), s.trigger_asked,
-                     s.triggers.empty() ? "none" : joined(s.triggers), s.transport);
-  owner_text(out, s);
-  if (!s.cannot_express.empty()) out += fmt::format("  {:<13} no request: {}\n", "note", s.cannot_express);
+  out += fmt::format("  {:<13} {}\n", "kind", words.kind);
+  out += fmt::format("  {:<13} {}; transport byte 0x{:02X}\n", "transport", words.transport, s.transport);
+  if (!words.owner_label.empty()) out += fmt::format("  {:<13} {}\n", words.owner_label, words.owners);
+  if (!words.note.empty()) out += fmt::format("  {:<13} no request: {}\n", "note", words.note);
   path_text(out, s);
   key_text(out, s);
-  direction_text(out, "O->T", "T->O", s.ot);
-  direction_text(out, "T->O", "O->T", s.to);
-  if (s.config_instance != 0)
-    out += fmt::format("  {:<13} instance {}, {} bytes: {}\n", "configuration", s.config_instance, s.config_data.size(),
+  direction_text(out, "O->T", s.ot, words.ot);
+  direction_text(out, "T->O", s.to, words.to);
+  if (!words.configuration.empty())
+    out += fmt::format("  {:<13} {}: {}\n", "configuration", words.configuration,
                        s.config_data.empty() ? "none" : wrapped_hex(s.config_data, 16));
   if (s.config_instance != 0) config_text(out, s);
   if (!s.request.empty())

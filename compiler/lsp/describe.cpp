@@ -4,6 +4,7 @@
 
 #include "base/plural.hpp"
 #include "connections/settings.hpp"
+#include "emit/connection_summary.hpp"
 #include "model/decode.hpp"
 #include "schema/cip_types.hpp"
 
@@ -190,6 +191,32 @@ std::string string_text(const cst::tree& t, const cst::field& f) {
     out += model::decode::piece_body(t.text(t.piece_of(f, p)), wide);
   }
   return out;
+}
+
+namespace {
+
+std::string direction_item(std::string_view name, const emit::direction_summary& d) {
+  std::string out = fmt::format("- {}: {}", name, d.size);
+  for (const auto* part : {&d.point, &d.types, &d.rpi})
+    if (!part->empty()) out += "; " + *part;
+  return out + "\n";
+}
+
+}  // namespace
+
+std::string describe_connection(const model::device& dev, const model::connection& c) {
+  if (!c.decoded) return {};  // the fields say nothing a scanner could use; their own hovers say why
+  for (const auto& s : connections::describe_connections(dev)) {
+    if (s.number != c.number || s.at.begin != c.from.where.begin) continue;
+    const auto w = emit::summarize(s);
+    std::string out = fmt::format("- kind: {}\n- transport: {}\n", w.kind, w.transport);
+    if (!w.owner_label.empty()) out += fmt::format("- {}: {}\n", w.owner_label, w.owners);
+    out += direction_item("O→T", w.ot) + direction_item("T→O", w.to);
+    if (!w.configuration.empty()) out += fmt::format("- configuration: {}\n", w.configuration);
+    if (!w.note.empty()) out += fmt::format("- no request: {}\n", w.note);
+    return out;
+  }
+  return {};
 }
 
 std::string param_line(const model::device& dev, const model::param& p) {

@@ -94,6 +94,7 @@ std::string fields_list(const schema::keyword_desc& k) {
 struct target_text {
   std::string line;
   std::string help;
+  std::string settings;  // a ConnectionN's, as `edsc connection` says them
 };
 
 target_text target_detail(const analysis& a, schema::ref_kind kind, std::uint32_t i, bool variant_io,
@@ -126,6 +127,7 @@ target_text target_detail(const analysis& a, schema::ref_kind kind, std::uint32_
       const auto& c = a.dev.connections[i];
       if (c.name.ok()) out.line = fmt::format("\"{}\"", c.name.text);
       if (c.help.ok()) out.help = std::string(c.help.text);
+      out.settings = describe_connection(a.dev, c);
       break;
     }
     case ref_kind::input:
@@ -154,6 +156,7 @@ std::string target_summary(const analysis& a, schema::ref_kind kind, std::uint32
   const auto d = target_detail(a, kind, target_index(a.dev, kind, number, variant_io), variant_io, entry, m.desc);
   if (!d.line.empty()) out += " " + d.line;
   if (!d.help.empty()) out += "\n\n" + d.help;
+  if (!d.settings.empty()) out += "\n\n" + d.settings;
   if (m.desc) out += fmt::format("\n\n{}", summary_of(*m.desc));
   out += fmt::format("\n\nDefined on line {}.", a.source->position(entry.keyword.begin).line);
   return out;
@@ -183,6 +186,7 @@ std::string keyword_hover(const analysis& a, const cst::entry& e) {
       const auto d = target_detail(a, kind, i, variant_io, def, keyword_desc_of(t, def).desc);
       if (!d.line.empty()) out += fmt::format("\n\n{}{}", owned ? fmt::format("Of Param{}: ", number) : "", d.line);
       if (!owned && !d.help.empty()) out += "\n\n" + d.help;
+      if (!d.settings.empty()) out += "\n\n" + d.settings;
     } else if (owned) {
       out += fmt::format("\n\nParam{} is not defined in this file.", number);
     }

@@ -209,4 +209,180 @@ TEST(Explain, JsonReadsBackAsTheTableSays) {
                                                    "words": null, "cause": null, "eds": null})"));
 }
 
+// --eds FILE --connection N: each extended status against OpENer's sample EDS,
+// whose lines were read by hand: Connection1 starts on line 184, its field 2
+// (0x44640405) is on line 196, "Param4,,Assem150," (fields 3-5) on line 222 from
+// column 17, "Param4,,Assem100," on 223, ",Assem151," (fields 11-12) on 225,
+// the path on 228; Connection3 (listen only) starts on 274 with field 1 on 275
+// and its path on 318; [Device] ProdType, ProdCode, MajRev on lines 15, 17, 18.
+class ExplainEds : public edsc::cli_test::Cli {
+ protected:
+  // The text with its wrapped lines joined: the file's path sets where they wrap.
+  static std::string unwrapped(const std::string& text) {
+    const std::string_view indent = "\n         ";
+    std::string out;
+    std::size_t from = 0;
+    for (auto at = text.find(indent); at != std::string::npos; at = text.find(indent, from)) {
+      out.append(text, from, at - from).push_back(' ');
+      from = at + indent.size();
+    }
+    return out.append(text, from);
+  }
+  static std::string opener() { return corpus("EIPStackGroup__OpENer__opener_sample_app.eds"); }
+  // The JSON `here` of the last status of `codes` against connection `which`.
+  static nlohmann::json here(std::initializer_list<std::string> codes, const std::string& which,
+                             std::initializer_list<std::string> more = {}) {
+    auto args = explain(codes);
+    args.insert(args.end(), {"--format", "json", "--eds", opener(), "--connection", which});
+    args.insert(args.end(), more);
+    const auto r = run_edsc(args);
+    EXPECT_EQ(r.status, 0) << r.output;
+    const auto doc = nlohmann::json::parse(r.output, nullptr, false);
+    if (!doc.is_object()) return nlohmann::json();
+    return doc.at("statuses").back().at("here");
+  }
+};
+
+TEST_F(ExplainEds, AnOtSizeRefusalNamesItsFieldWithTheNumbers) {
+  const auto r =
+      run_edsc({"explain", "0x01", "0x0127", "--additional", "0x0022", "--eds", opener(), "--connection", "1"});
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(r.output.starts_with(run_edsc(explain({"0x01"})).output + "\n" + extended_0x0127)) << r.output;
+  // 34 accepted against 32 data + 2 sequence + 4 run/idle: 4 fewer, the run/idle header.
+  EXPECT_TRUE(unwrapped(r.output).ends_with(
+      "  here:  " + opener() +
+      " line 222, Connection1 field 5 (O->T format, the assembly whose size it is): the device accepts 34 bytes "
+      "O->T; the EDS says 32 + 2 sequence + 4 run/idle = 38 (4 fewer: the device counts no run/idle header; see "
+      "the real-time format of field 2)\n"))
+      << r.output;
+  EXPECT_EQ(r.output.find("here:", r.output.find("0x01 connection failure") + 1), r.output.rfind("here:"))
+      << "the general status points nowhere";
+  // The connection by name, any case, says the same.
+  EXPECT_EQ(
+      run_edsc({"explain", "0x01", "0x0127", "--additional", "34", "--eds", opener(), "--connection", "exlusive OWNER"})
+          .output,
+      r.output);
+}
+
+TEST_F(ExplainEds, TheSizeTheDeviceAcceptsIsReadAgainstTheHeaders) {
+  const auto words = [&](const char* code, const char* accepted) {
+    return here({"0x01", code}, "1", {"--additional", accepted}).at("words").get<std::string>();
+  };
+  EXPECT_EQ(words("0x0127", "38"),
+            "the device accepts 38 bytes O->T; the EDS says 32 + 2 sequence + 4 run/idle = 38 (the same size: look at "
+            "the fixed and variable bits of field 2)");
+  EXPECT_EQ(words("0x0127", "0x0020"),
+            "the device accepts 32 bytes O->T; the EDS says 32 + 2 sequence + 4 run/idle = 38 (with the same headers, "
+            "the device wants 26 data bytes)");
+  // T->O is modeless: 34 = 32 + 2; 38 is 4 more, a run/idle header the EDS does not give.
+  EXPECT_EQ(words("0x0128", "38"),
+            "the device accepts 38 bytes T->O; the EDS says 32 + 2 sequence = 34 (4 more: the device wants a run/idle "
+            "header; see the real-time format of field 2)");
+  // 0x0126 in the data segment's words: Assem151 holds 10 bytes, 5 words.
+  EXPECT_EQ(words("0x0126", "5"),
+            "the device accepts 5: 10 bytes in the 16-bit words of the data segment (as edsc sim counts), 5 if it "
+            "counts bytes; the EDS gives 10 bytes of configuration data for instance 151");
+  // Without the word, the EDS's numbers alone.
+  EXPECT_EQ(here({"0x0128"}, "1").at("words"), "the EDS says 32 + 2 sequence = 34 bytes T->O");
+}
+
+TEST_F(ExplainEds, EachStatusPointsAtItsField) {
+  struct expected {
+    const char* code;
+    const char* which;
+    int line;
+    const char* field;
+    const char* words;
+  };
+  const expected cases[] = {
+      {"0x0109", "1", 196, "Connection1 field 2 (connection parameters)",
+       "a scanner configured from the EDS asks O->T 32 + 2 sequence + 4 run/idle = 38 bytes, fixed; point-to-point "
+       "(offered: point-to-point), scheduled priority (offered: scheduled); T->O 32 + 2 sequence = 34 bytes, fixed; "
+       "point-to-point (offered: multicast, point-to-point), scheduled priority (offered: scheduled)"},
+      {"0x0111", "1", 222, "Connection1 field 3 (O->T RPI)",
+       "a scanner configured from the EDS asks 30 ms both ways: RPI at least 20 ms, default 30 ms (Param4), Param4 "
+       "at line 66"},
+      {"0x0114", "1", 17, "[Device] ProdCode", "the key asks vendor 1 (VendCode) and product code 65001 (ProdCode)"},
+      {"0x0115", "1", 15, "[Device] ProdType", "the key asks device type 12 (ProdType)"},
+      {"0x0116", "1", 18, "[Device] MajRev",
+       "the key asks revision 2.3, compatible: a device of major revision 2 with minor revision 3 or newer (MajRev, "
+       "MinRev)"},
+      {"0x0126", "1", 225, "Connection1 field 12 (configuration format, the assembly whose size it is)",
+       "the EDS gives 10 bytes of configuration data for instance 151"},
+      {"0x0127", "1", 222, "Connection1 field 5 (O->T format, the assembly whose size it is)",
+       "the EDS says 32 + 2 sequence + 4 run/idle = 38 bytes O->T"},
+      {"0x0129", "1", 228, "Connection1 field 15 (connection path)",
+       "the path names configuration instance 151 (24 97); 10 bytes of configuration data go with it"},
+      {"0x012A", "1", 228, "Connection1 field 15 (connection path)",
+       "the path names O->T connection point 150 (2C 96): the output assembly"},
+      {"0x012B", "1", 228, "Connection1 field 15 (connection path)",
+       "the path names T->O connection point 100 (2C 64): the input assembly"},
+      {"0x012F", "3", 318, "Connection3 field 15 (connection path)",
+       "the path names configuration instance 151 (24 97), O->T connection point 153 (2C 99), T->O connection point "
+       "100 (2C 64)"},
+      {"0x0119", "3", 275, "Connection3 field 1 (trigger and transport)",
+       "Connection3 is listen only and needs one of Connection1, Connection2 open first (same input point 100)"},
+      {"0x0119", "1", 185, "Connection1 field 1 (trigger and transport)",
+       "Connection1 is exclusive owner, with configuration, not listen only: the status answers a listen-only "
+       "connection opened while none of its owners was"},
+  };
+  for (const auto& c : cases) {
+    const auto h = here({"0x01", c.code}, c.which);
+    ASSERT_TRUE(h.is_object()) << c.code << " " << h;
+    EXPECT_EQ(h.at("file"), opener()) << c.code;
+    EXPECT_EQ(h.at("line"), c.line) << c.code << " " << h;
+    EXPECT_EQ(h.at("field"), c.field) << c.code;
+    EXPECT_EQ(h.at("words"), c.words) << c.code;
+  }
+  // A status the EDS plays no part in points nowhere.
+  EXPECT_TRUE(here({"0x01", "0x0106"}, "1").is_null());
+}
+
+TEST_F(ExplainEds, ABadFileOrConnectionIsLocatedAndNothingElsePrinted) {
+  auto r = run_edsc({"explain", "0x01", "0x0127", "--eds", opener(), "--connection", "Owner"});
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.output.find(":184:9: error: no connection 'Owner' here; the file has Connection1 \"Exlusive Owner\", "
+                          "Connection2 \"Input Only\", Connection3 \"Listen Only\" [settings-unknown-connection]"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(r.output.find("invalid O->T size"), std::string::npos) << "nothing half-printed";
+  const auto node = (fs::path(EDSC_PROJECT_DIR) / "eds/nodes/level.eds").string();
+  r = run_edsc({"explain", "0x0127", "--eds", node, "--connection", "1"});
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.output.find("level.eds:1:1: error: no ConnectionN in [Connection Manager]"), std::string::npos)
+      << r.output;
+  EXPECT_EQ(r.output.find("invalid O->T size"), std::string::npos);
+  const auto broken = file("broken.eds", "[Device]\nVendCode = 1\n[Connection Manager]\n");
+  r = run_edsc({"explain", "0x0127", "--eds", broken.string(), "--connection", "1"});
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find("broken.eds:2:"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("no settings: fix the syntax errors above first"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("invalid O->T size"), std::string::npos);
+  r = run_edsc({"explain", "0x0127", "--eds", (fs::path(dir_) / "none.eds").string(), "--connection", "1"});
+  EXPECT_EQ(r.status, 2) << r.output;  // an unreadable file, as everywhere
+  EXPECT_EQ(r.output.find("invalid O->T size"), std::string::npos);
+}
+
+TEST_F(ExplainEds, TheOptionsGoTogether) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+      {{"explain", "0x0127", "--eds", opener()},
+       "edsc: error: --eds and --connection go together: a status is read against one connection of one EDS\n"},
+      {{"explain", "0x0127", "--connection", "1"},
+       "edsc: error: --eds and --connection go together: a status is read against one connection of one EDS\n"},
+      {{"explain", "0x0127", "--additional", "34"},
+       "edsc: error: --additional goes with --eds and --connection: it is compared with what the EDS says\n"},
+      {{"explain", "0x01", "0x0111", "--additional", "34", "--eds", opener(), "--connection", "1"},
+       "edsc: error: --additional is the size the device accepts, which only the extended statuses 0x0126, 0x0127 "
+       "and 0x0128 carry\n"},
+  };
+  for (const auto& [args, message] : cases) {
+    const auto r = run_edsc(args);
+    EXPECT_EQ(r.status, 2) << args[2];
+    EXPECT_EQ(r.output, message) << args[2];
+  }
+  // Without --eds the JSON keeps its keys: no `here`.
+  const auto plain = nlohmann::json::parse(run_edsc(explain({"--format", "json", "0x0127"})).output);
+  EXPECT_FALSE(plain.at("statuses")[0].contains("here"));
+}
+
 }  // namespace

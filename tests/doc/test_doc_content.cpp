@@ -107,15 +107,41 @@ TEST(DocContent, ParametersShowFlagsEnumerationsAndScaledValues) {
   EXPECT_NE(p3.find("70\n= 7 |"), std::string::npos) << p3;
 }
 
-TEST(DocContent, ConnectionBitsAndPathsAreInWords) {
+// 0x84010002: class 1 (bit 1), cyclic (bit 16), exclusive owner (bit 26);
+// 0x44640405: O->T fixed, run/idle (4 << 8), point-to-point, scheduled; T->O
+// fixed, modeless, multicast or point-to-point, scheduled. Assem100 is 4
+// bytes: 4 + 2 sequence + 4 run/idle O->T, 4 + 2 T->O.
+TEST(DocContent, ConnectionsAreInTheWordsOfTheCommand) {
   const auto a = analyse(hostile_eds);
   const auto s = doc::build_sheet(*a);
   const auto c = row_text(s.connections, "Connection1");
-  EXPECT_NE(c.find("class 1\ncyclic\nexclusive owner\nserver"), std::string::npos) << c;
-  EXPECT_NE(c.find("RPI 10000 µs"), std::string::npos) << c;
-  EXPECT_NE(c.find("32-bit run/idle header"), std::string::npos) << c;
-  EXPECT_NE(c.find("4 bytes, assembly 100"), std::string::npos) << c;
+  EXPECT_NE(c.find("| exclusive owner\nclass 1, cyclic (offered: cyclic) |"), std::string::npos) << c;
+  EXPECT_NE(c.find("| 4 data + 2 sequence + 4 run/idle = 10 bytes, fixed\ninstance 100, 32-bit run/idle header\n"
+                   "point-to-point (offered: point-to-point), scheduled priority (offered: scheduled)\n"
+                   "RPI 10 ms (the EDS gives 10000 µs) |"),
+            std::string::npos)
+      << c;
+  EXPECT_NE(c.find("| 4 data + 2 sequence = 6 bytes, fixed\ninstance 100, modeless (pure data)\n"), std::string::npos)
+      << c;
+  EXPECT_NE(c.find("RPI 20 ms (the EDS gives 20000 µs)"), std::string::npos) << c;
   EXPECT_NE(c.find("Assembly class, instance 1, connection point 100, connection point 100"), std::string::npos) << c;
+}
+
+// An RPI a parameter gives: its range and default, and which parameter, not
+// the reference as written ("RPI Param999 µs").
+TEST(DocContent, AnRpiParameterGivesItsRangeAndDefault) {
+  std::string text = hostile_eds;
+  const auto at = text.find("10000, , Assem100, 20000");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 24, "Param999, , Assem100, Param999");
+  text.replace(text.find("[Assembly]"), 10,
+               "    Param999 = 0, , , 0x0000, 0xC8, 4, \"RPI\", \"us\", \"\", 1000, 1000000, 10000, , , , , , , , , ;\n"
+               "[Assembly]");
+  const auto a = analyse(text);
+  const auto s = doc::build_sheet(*a);
+  const auto c = row_text(s.connections, "Connection1");
+  EXPECT_NE(c.find("\nRPI 1–1000 ms, default 10 ms (Param999) |"), std::string::npos) << c;
+  EXPECT_EQ(c.find("Param999 µs"), std::string::npos) << c;
 }
 
 // One of each proxy kind beside a real connection. Decoded by hand:

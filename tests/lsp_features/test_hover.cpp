@@ -1,5 +1,12 @@
 // Hover text for each kind of thing under the cursor: the range it covers
 // and the facts it must state (worked out from the sample by hand).
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "connections/settings.hpp"
+#include "corpus_dirs.hpp"
+#include "emit/connection_render.hpp"
 #include "lsp/describe.hpp"
 #include "lsp_support.hpp"
 #include "test_paths.hpp"
@@ -116,6 +123,22 @@ TEST_F(LspHover, ReferencesShowTheirTarget) {
   EXPECT_HAS(placeholder.md, "**Param2** \"Mode\" USINT");
 }
 
+// Sample's Connection1: 0x04010002 class 1, cyclic, exclusive owner;
+// 0x44640405 O->T run/idle and point-to-point, T->O modeless, multicast or
+// point-to-point; field 4 gives 2 O->T bytes, field 7 gives 4 T->O bytes;
+// Param3 (1000 to 100000 µs, default 10000) is both RPIs.
+TEST_F(LspHover, AConnectionIsSaidAsTheCommandSaysIt) {
+  const auto h = hover_at(*a, offset_of(*a, "Connection1 ="));
+  EXPECT_EQ(h.range, "Connection1");
+  EXPECT_HAS(h.md, "\"Exclusive Owner\"\n\n- kind: exclusive owner\n- transport: class 1, cyclic (offered: cyclic)\n");
+  EXPECT_HAS(h.md,
+             "- O→T: 2 data + 2 sequence + 4 run/idle = 8 bytes, fixed; instance 150, 32-bit run/idle header; "
+             "point-to-point (offered: point-to-point), scheduled priority (offered: scheduled); "
+             "RPI 1–100 ms, default 10 ms (Param3)\n");
+  EXPECT_HAS(h.md, "- T→O: 4 data + 2 sequence = 6 bytes, fixed; instance 100, modeless (pure data); ");
+  EXPECT_EQ(h.md.find("configuration:"), std::string::npos) << "no configuration size: none to send";
+}
+
 TEST_F(LspHover, UndefinedAndUnknown) {
   auto b = analyze_text(std::string(sample) +
                         "        Connection2 = 0x04010002, 0x44640405, Param9;\n"
@@ -128,6 +151,48 @@ TEST_F(LspHover, UndefinedAndUnknown) {
   auto c = analyze_text("Stray = 1;\n" + std::string(sample));
   EXPECT_HAS(hover_at(*c, 0).md, "**Stray** — an entry before the first section header");
   EXPECT_EQ(hover_at(*b, offset_of(*b, "\n\n[Device]", 1)).range, "<none>");  // a blank line
+}
+
+// The command's block for ConnectionN: from its heading to the blank line.
+std::string block_of(const std::string& text, std::uint32_t number) {
+  const auto head = fmt::format("Connection{} \"", number);
+  const auto at = text.rfind(head, 0) == 0 ? 0 : text.find("\n" + head);
+  if (at == std::string::npos) return {};
+  return text.substr(at, text.find("\n\n", at + 1) - at);
+}
+
+// Each part of each item a hover over a ConnectionN lists ("- O→T: a; b; c")
+// is in `edsc connection`'s text of it, on every corpus file: the hover has
+// no wording of its own.
+TEST(LspHoverFiles, EveryConnectionHoverIsTheCommandsWords) {
+  std::size_t hovers = 0;
+  for (const auto& path : corpora::sample()) {
+    auto a = analyze_path(path.string());
+    ASSERT_TRUE(a);
+    const auto text = emit::render_connections_text(connections::describe_connections(a->dev), *a->source);
+    for (const auto& c : a->dev.connections) {
+      const auto h = lsp::hover(*a, c.from.where.begin);
+      ASSERT_TRUE(h) << path.filename();
+      const auto block = block_of(text, c.number);
+      std::istringstream in(h->markdown);
+      std::size_t items = 0;
+      for (std::string line; std::getline(in, line);) {
+        if (!line.starts_with("- ") || line.find(": ") == std::string::npos) continue;
+        ++items;
+        auto rest = line.substr(line.find(": ") + 2);
+        for (std::size_t at = 0; at <= rest.size();) {
+          const auto end = std::min(rest.find("; ", at), rest.size());
+          EXPECT_NE(block.find(rest.substr(at, end - at)), std::string::npos)
+              << path.filename() << " Connection" << c.number << ": the hover says '" << rest.substr(at, end - at)
+              << "', the command says\n"
+              << block;
+          at = end + 2;
+        }
+      }
+      hovers += items > 0;
+    }
+  }
+  EXPECT_GT(hovers, corpora::sample_stride() == 1 ? 200u : 10u);
 }
 
 TEST(LspHoverFiles, ProjectExample) {
