@@ -84,8 +84,8 @@ void one_c(std::string& out, const connection_setting& s, const source_file& src
 constexpr std::string_view preamble = R"(#include <stdint.h>
 
 /* The Forward_Open (service 0x54) or Large_Forward_Open (0x5B) request,
-   addressed to the Connection Manager: send it in an Unconnected Send or
-   SendRRData. The originator fills in, little-endian, before sending: */
+   addressed to the Connection Manager: send it in SendRRData (inside an
+   Unconnected_Send when routed). The originator fills in, little-endian: */
 #define EDSC_FO_OT_CONNECTION_ID 8 /* UDINT, 0: the target chooses */
 #define EDSC_FO_TO_CONNECTION_ID 12 /* UDINT, the originator's choice */
 #define EDSC_FO_CONNECTION_SERIAL 16 /* UINT, unique per originator */

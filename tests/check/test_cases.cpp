@@ -158,6 +158,12 @@ TEST(check_cases, every_rule_has_a_triggering_case) {
       "settings-no-connections",
       "settings-unknown-connection",
       "settings-not-openable",
+      // --set values: tests/cli/test_connection_cli.cpp and tests/emit/test_connection_overrides.cpp.
+      "settings-unknown-parameter",
+      "settings-value-type",
+      "settings-value-limits",
+      "settings-value-enum",
+      "settings-set-unused",
   };
   std::set<std::string_view> seen;
   for (const auto& path : case_files()) {

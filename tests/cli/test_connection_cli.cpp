@@ -155,5 +155,19 @@ TEST_F(ConnectionCli, ASetNoConnectionPrintedReadsIsWarnedAbout) {
   EXPECT_EQ(quiet.output.find("warning"), std::string::npos) << quiet.output;
 }
 
+TEST_F(ConnectionCli, AValueEnumNDoesNotListIsUsedWithAWarning) {
+  auto text = read_bytes((fs::path(EDSC_PROJECT_DIR) / "tests/docs/workspace/configured.eds").string());
+  const auto at = text.find("\"Mode\", \"\", \"\", 0, 2, 0");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 26, "\"Mode\", \"\", \"\", 0, 3, 0");  // the maximum past Enum2's values 0-2
+  const auto r = run_edsc({"connection", file("enum.eds", text).string(), "--set", "Mode=3"});
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("warning: --set Mode: 3 is not one of the values Enum2 lists: 0 \"Normal\", 1 \"Fast\", 2 "
+                          "\"Safe\" [settings-value-enum]"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("Param2 \"Mode\" = 3 (bits 16-23), set by --set"), std::string::npos) << r.output;
+}
+
 }  // namespace
 }  // namespace edsc::cli_test
