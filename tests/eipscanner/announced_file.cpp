@@ -51,9 +51,9 @@ std::vector<announced_connection> announce(const std::string& file, std::string&
   return read_announced(r.out, error);
 }
 
-reviewed not_opened() {
+reviewed not_opened(const std::string& name) {
   reviewed out;
-  std::ifstream in(std::string(EDSC_TESTS_DIR) + "/eipscanner/announced_not_opened.txt");
+  std::ifstream in(std::string(EDSC_TESTS_DIR) + "/eipscanner/" + name);
   for (std::string line; std::getline(in, line);) {
     if (line.empty() || line[0] == '#') continue;
     const auto colon = line.find(": ");
@@ -75,7 +75,7 @@ file_outcome open_every_connection(const std::string& file, const std::vector<an
     const auto reason = listed.find(key);
     if (reason != listed.end()) {
       if (failure.empty())
-        out.failures.push_back(key + " is listed in announced_not_opened.txt (" + reason->second +
+        out.failures.push_back(key + " is listed as not opened (" + reason->second +
                                ") but opens: remove it from the list");
       else
         ++out.listed;

@@ -2,7 +2,8 @@
 // Every class 1 connection `edsc connection FILE --format json` announces,
 // opened by EIPScanner on `edsc sim` of the same file (announced_open.hpp),
 // except those tests/eipscanner/announced_not_opened.txt lists with the
-// reason: each listed one must still fail, so the list stays true.
+// reason (announced_not_opened_opener.txt on the generated OpENer device):
+// each listed one must still fail, so the list stays true.
 #include <map>
 #include <string>
 #include <vector>
@@ -15,9 +16,10 @@ namespace edsc::scanner_test {
 // when edsc fails or the JSON cannot be read.
 std::vector<announced_connection> announce(const std::string& file, std::string& error);
 
-// "FILE.eds:N" (the file's name without folders) -> why EIPScanner cannot open ConnectionN.
+// "FILE.eds:N" (the file's name without folders) -> why EIPScanner cannot
+// open ConnectionN, from the list `name` of tests/eipscanner.
 using reviewed = std::map<std::string, std::string>;
-reviewed not_opened();
+reviewed not_opened(const std::string& name = "announced_not_opened.txt");
 
 struct file_outcome {
   std::vector<std::string> failures;  // each names the file and the connection

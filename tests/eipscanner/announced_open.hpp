@@ -18,7 +18,8 @@ struct open_outcome {
 };
 
 // Opens `c` at `ip` (after `owner`, unless null) and checks it against the
-// simulator's event log in the file `sim_log`.
+// simulator's event log in the file `sim_log`; a device without one (OpENer)
+// is given "", and only the T->O frames EIPScanner receives are checked.
 open_outcome open_announced(const std::string& ip, const announced_connection& c, const announced_connection* owner,
                             const std::string& sim_log);
 

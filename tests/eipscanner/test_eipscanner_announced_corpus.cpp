@@ -67,6 +67,16 @@ file_outcome run_file(live_test::test_network& net, const fs::path& f, const rev
   return out;
 }
 
+// The entries of `listed` whose file is one of `files` (under the
+// sanitizers, a sample of the corpora).
+std::size_t listed_in(const reviewed& listed, const std::vector<fs::path>& files) {
+  std::size_t n = 0;
+  for (const auto& [key, why] : listed)
+    n += std::any_of(files.begin(), files.end(),
+                     [&](const fs::path& f) { return key.starts_with(f.filename().string() + ":"); });
+  return n;
+}
+
 // EIPScanner waits on RPIs most of the time: a few networks at once.
 constexpr std::size_t workers = 4;
 
@@ -88,15 +98,16 @@ TEST(eipscanner_announced_corpus, every_class_1_connection_of_both_corpora_opens
       for (auto i = next++; i < files.size(); i = next++) results[i] = run_file(*n, files[i], listed);
     });
   for (auto& t : threads) t.join();
-  unsigned opened = 0, still_listed = 0;
+  unsigned opened = 0;
+  std::size_t still_listed = 0;
   for (const auto& r : results) {
     for (const auto& f : r.failures) ADD_FAILURE() << f;
     opened += r.opened;
     still_listed += r.listed;
   }
-  EXPECT_EQ(still_listed, listed.size()) << "a connection of announced_not_opened.txt was not tried";
+  EXPECT_EQ(still_listed, listed_in(listed, files)) << "a connection of announced_not_opened.txt was not tried";
   const auto seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("%zu files, %u connections opened from the JSON, %u listed as not opened, %.1f s on %zu networks\n",
+  std::printf("%zu files, %u connections opened from the JSON, %zu listed as not opened, %.1f s on %zu networks\n",
               files.size(), opened, still_listed, seconds, nets.size());
 }
 
