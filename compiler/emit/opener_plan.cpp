@@ -24,6 +24,24 @@ span where_of(const model::connection& c, const model::value& field) {
   return field.present() ? field.from.where : c.from.where;
 }
 
+// Why OpENer cannot read the path's connection points, or empty. After the
+// configuration instance it reads one per direction the Forward_Open opens
+// (O->T, then T->O; a null direction has none): with fewer it reads past
+// the path and refuses the connection with 0x0315 (measured on a generated
+// device, tests/eipscanner). The directions are those a scanner configured
+// from the EDS opens (connections/plan.cpp: any type but null offered).
+std::string points_problem(const model::connection& c, const model::epath& p) {
+  const auto opened = [](const model::direction_params& d) { return d.type_p2p || d.type_multicast; };
+  const auto needed = (opened(c.cp.ot) ? 1 : 0) + (opened(c.cp.to) ? 1 : 0);
+  const auto points = std::count_if(p.segments.begin(), p.segments.end(),
+                                    [](const auto& s) { return s.kind == model::segment_kind::connection_point; });
+  if (points >= needed) return {};
+  return fmt::format(
+      "its path gives {} connection point{} (0x2C) where OpENer reads {}, one per direction the connection opens "
+      "(O->T, then T->O); OpENer refuses it with 0x0315",
+      points, points == 1 ? "" : "s", needed);
+}
+
 // Why OpENer cannot serve this path, or empty: its connection points join
 // assembly instances that the EDS states as numbers.
 std::string path_problem(const model::device& dev, const model::connection& c, const eip_connection_facts& f) {
@@ -63,7 +81,7 @@ std::string path_problem(const model::device& dev, const model::connection& c, c
   if (f.input_size > 0 && f.input_instance == 0) return "its T->O data has no assembly instance in the path";
   if (f.input_instance == 0)
     return "its path names no input (T->O) instance, which every OpENer connection point needs";
-  return {};
+  return points_problem(c, *p);
 }
 
 class planner {

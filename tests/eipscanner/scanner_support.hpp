@@ -33,6 +33,14 @@ inline live_test::network_options scanner_net() {
   return o;
 }
 
+// The networks of the tests that run a generated OpENer device: tests/stack's
+// /30s under names of this folder's own, the scanner's end in its own namespace.
+inline live_test::network_options opener_net() {
+  live_test::network_options o{"edsc-eipstack-", "eq", 32, 62};
+  o.scanner_namespace = true;
+  return o;
+}
+
 // `edsc sim EDS` with the scanner's end in its own namespace.
 inline running_sim start_sim(const std::string& eds, const std::vector<std::string>& extra = {},
                              const running_sim::files& written = {}) {

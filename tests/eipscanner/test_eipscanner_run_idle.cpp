@@ -91,10 +91,8 @@ const std::string sample_eds = std::string(EDSC_SHARED_DIR) + "/opener/data/open
 TEST(eipscanner_run_idle, the_generated_opener_device_and_the_simulator_report_idle_then_run) {
   if (!std::filesystem::exists(std::string(EDSC_OPENER_SOURCE_DIR) + "/CMakeLists.txt"))
     GTEST_SKIP() << "OpENer's sources are missing: " << EDSC_OPENER_SOURCE_DIR;
-  live_test::network_options stack_net{"edsc-eipstack-", "eq", 32, 62};
-  stack_net.scanner_namespace = true;
   std::string why;
-  auto net = live_test::test_network::make(why, stack_net);
+  auto net = live_test::test_network::make(why, opener_net());
   if (!net) GTEST_SKIP() << why;
   // Its own build folder: tests/stack builds the same EDS in "sample", maybe at the same time.
   const auto built = stack_test::build_device("run-idle", sample_eds);

@@ -202,6 +202,38 @@ TEST(OpenerPlan, EachDirectionWithDataNeedsAnInstance) {
   }
 }
 
+TEST(OpenerPlan, APathNeedsAConnectionPointPerDirectionTheConnectionOpens) {
+  // Input only (bit 25), O->T a heartbeat offered point-to-point (0x44640205:
+  // bit 18), T->O multicast or point-to-point (bits 21, 22): OpENer reads two
+  // points after configuration 120, and this path gives only T->O's 130.
+  conn in{.trigger = "0x82010002", .params = "0x44640205", .ot_format = "", .path = "\"20 04 24 78 2C 82\""};
+  {
+    const auto c = plan_connections({in});
+    expect_one(*c, diag_id::opener_connection_path,
+               "Connection1: its path gives 1 connection point (0x2C) where OpENer reads 2, one per direction the "
+               "connection opens (O->T, then T->O); OpENer refuses it with 0x0315",
+               c->at(in.path));
+    EXPECT_TRUE(c->plan.points.empty());
+  }
+  {
+    // O->T offered null only (0x44610205: bit 16): one direction, one point.
+    in.params = "0x44610205";
+    const auto c = plan_connections({in});
+    EXPECT_TRUE(c->diags.empty()) << c->diags[0].message;
+    EXPECT_EQ(points(c->plan), (std::vector<std::string>{"input-only#0 Connection1 0/130/120 Owner"}));
+  }
+  {
+    // An owner whose output instance its assembly's own path gives (150),
+    // with a path of the configuration instance and one point.
+    conn owner{.ot_format = "Assem150", .config_format = "", .path = "\"20 04 24 96 2C 82\""};
+    const auto c = plan_connections({owner}, "    Assem150 = \"Out2\", \"20 04 24 96 30 03\", 16, 0x0001, , ;\n");
+    expect_one(*c, diag_id::opener_connection_path,
+               "Connection1: its path gives 1 connection point (0x2C) where OpENer reads 2, one per direction the "
+               "connection opens (O->T, then T->O); OpENer refuses it with 0x0315",
+               c->at(owner.path));
+  }
+}
+
 TEST(OpenerPlan, AConnectionWithoutAPathIsReportedAtItsEntry) {
   const std::string entry =
       "Connection1 = 0x84010002, 0x44640405, 10000, , Assem100, 10000, , Assem130, , , , "
