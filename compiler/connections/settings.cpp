@@ -57,8 +57,11 @@ direction_setting direction_of(const model::direction_params& d, const cip::net_
   if (d.prio_high) s.priorities.push_back(cip::conn_priority::high);
   if (d.prio_scheduled) s.priorities.push_back(cip::conn_priority::scheduled);
   s.asked = asked;
-  if (auto w = cip::encode_params16(asked)) s.word16 = *w;
-  s.word32 = cip::encode_params32(asked);
+  // The plan counts a sequence count in every size; only class 1 sends one
+  // (a connection of another class has no request, but its sizes are shown).
+  if (s.used && !class1 && s.asked.size >= 2) s.asked.size = static_cast<std::uint16_t>(s.asked.size - 2);
+  if (auto w = cip::encode_params16(s.asked)) s.word16 = *w;
+  s.word32 = cip::encode_params32(s.asked);
   return s;
 }
 

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "base/plural.hpp"
+
 #include "emit/connection_render.hpp"
 
 namespace edsc::emit {
@@ -30,7 +32,7 @@ std::string size_words(const direction_setting& d) {
   std::string s = fmt::format("{} data", d.data_size);
   if (d.sequence) s += " + 2 sequence";
   if (d.run_idle) s += " + 4 run/idle";
-  s += fmt::format(" = {} bytes, {}", d.asked.size, d.asked.variable ? "variable" : "fixed");
+  s += fmt::format(" = {}, {}", plural(d.asked.size, "byte"), d.asked.variable ? "variable" : "fixed");
   if (d.fixed && d.variable) s += " (fixed or variable offered)";
   return s;
 }
@@ -102,7 +104,7 @@ connection_summary summarize(const connection_setting& s) {
   out.ot = direction_of(s.ot, "T->O");
   out.to = direction_of(s.to, "O->T");
   if (s.config_instance != 0)
-    out.configuration = fmt::format("instance {}, {} bytes", s.config_instance, s.config_data.size());
+    out.configuration = fmt::format("instance {}, {}", s.config_instance, plural(s.config_data.size(), "byte"));
   out.note = s.cannot_express;
   return out;
 }
