@@ -120,9 +120,10 @@ int run_connection(const connection_cli& cli) {
   }
   warn_unused(*applied, all, set_diags);
   print_diags(src, set_diags);
-  const auto text = cli.format == "json" ? emit::render_connections_json(all, src)
-                    : cli.format == "c"  ? emit::render_connections_c(all, src)
-                                         : emit::render_connections_text(all, src);
+  const auto text = cli.format == "json"         ? emit::render_connections_json(all, src)
+                    : cli.format == "c"          ? emit::render_connections_c(all, src)
+                    : cli.format == "eipscanner" ? emit::render_connections_eipscanner(all, src)
+                                                 : emit::render_connections_text(all, src);
   return write_result(cli.output, text);
 }
 
@@ -144,8 +145,9 @@ void register_connection(CLI::App& app, command_action& run) {
               return s ? std::string() : s.error();
             }),
         arg_kind::text);
-  add_choice(cmd, "--format", cli->format, {"text", "json", "c"},
-             "What to write: text for a person (default), JSON, or a C header with each request's bytes");
+  add_choice(cmd, "--format", cli->format, {"text", "json", "c", "eipscanner"},
+             "What to write: text for a person (default), JSON, a C header with each request's bytes, or C++ "
+             "for EIPScanner");
   takes(cmd->add_option("-o,--output", cli->output, "Write here ('-': standard output, the default)"),
         arg_kind::output);
   add_example(cmd, "edsc connection device.eds", "every connection's settings");

@@ -20,6 +20,11 @@ namespace edsc::emit {
 [[nodiscard]] std::string render_connections_c(const std::vector<connections::connection_setting>& all,
                                                const source_file& src);
 
+// C++ filling EIPScanner's ConnectionParameters, one function per
+// connection (emit/connection_eipscanner.cpp).
+[[nodiscard]] std::string render_connections_eipscanner(const std::vector<connections::connection_setting>& all,
+                                                        const source_file& src);
+
 // Bytes as two-digit upper-case hex separated by blanks ("20 04 24 01").
 [[nodiscard]] std::string hex_bytes(const cip::bytes& b);
 // An interval in microseconds the way a scanner's dialog asks it: "10 ms", "2.5 ms", "250 µs".
