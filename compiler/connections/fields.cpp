@@ -145,7 +145,7 @@ void put_bits(cip::bytes& data, std::uint32_t at, std::uint32_t bits, std::uint6
   }
 }
 
-std::uint64_t get_bits(const cip::bytes& data, std::uint32_t at, std::uint32_t bits) {
+std::uint64_t get_bits(cip::byte_view data, std::uint32_t at, std::uint32_t bits) {
   std::uint64_t v = 0;
   for (std::uint32_t i = 0; i < bits && i < 64; ++i) {
     const auto bit = at + i;

@@ -52,7 +52,10 @@ struct number {
 [[nodiscard]] number decode_field(const data_field& f, std::uint64_t raw);
 
 void put_bits(cip::bytes& data, std::uint32_t at, std::uint32_t bits, std::uint64_t v);
-[[nodiscard]] std::uint64_t get_bits(const cip::bytes& data, std::uint32_t at, std::uint32_t bits);
+[[nodiscard]] std::uint64_t get_bits(cip::byte_view data, std::uint32_t at, std::uint32_t bits);
+
+// The text the parameter's EnumN gives `v`, or empty.
+[[nodiscard]] std::string enum_text(const model::device& dev, const model::param& p, const number& v);
 
 // What a value must be for its parameter, beyond the field's width.
 enum class value_fault : std::uint8_t { type, limits, enumeration };

@@ -59,11 +59,7 @@ std::optional<set_value> read_value(const model::device& dev, std::uint32_t inde
   } else {
     return std::nullopt;
   }
-  if (e != nullptr)
-    for (const auto& pair : e->pairs)
-      if (const auto n = number_of(pair.val);
-          n && n->is_real == out.v.is_real && n->integer == out.v.integer && n->real == out.v.real && pair.text.ok())
-        out.enum_text = std::string(pair.text.text);
+  out.enum_text = enum_text(dev, p, out.v);
   return out;
 }
 

@@ -104,15 +104,6 @@ std::vector<path_part> path_of(const model::device& dev, const model::epath& p, 
   return out;
 }
 
-std::string enum_text_of(const model::device& dev, const model::param& p, const number& v) {
-  if (p.enum_index >= dev.enums.size()) return {};
-  for (const auto& pair : dev.enums[p.enum_index].pairs)
-    if (const auto n = number_of(pair.val);
-        n && pair.text.ok() && (n->is_real ? n->real == v.real : n->integer == v.integer) && n->is_real == v.is_real)
-      return std::string(pair.text.text);
-  return {};
-}
-
 // The configuration data read back field by field: what the bytes hold.
 std::vector<config_field> config_fields_of(const model::device& dev, const model::connection& c, const cip::bytes& data,
                                            const std::vector<std::uint32_t>& set_params) {
@@ -122,7 +113,7 @@ std::vector<config_field> config_fields_of(const model::device& dev, const model
   for (auto& f : fields_of(dev, *a, data.size())) {
     config_field cf;
     cf.value = decode_field(f, get_bits(data, f.bit, f.bits));
-    cf.enum_text = enum_text_of(dev, dev.params[f.param_index], cf.value);
+    cf.enum_text = enum_text(dev, dev.params[f.param_index], cf.value);
     cf.set = std::find(set_params.begin(), set_params.end(), f.param_index) != set_params.end();
     cf.field = std::move(f);
     out.push_back(std::move(cf));

@@ -56,6 +56,13 @@ std::string enum_list(const model::param_enum& e) {
 
 }  // namespace
 
+std::string enum_text(const model::device& dev, const model::param& p, const number& v) {
+  if (p.enum_index >= dev.enums.size()) return {};
+  for (const auto& pair : dev.enums[p.enum_index].pairs)
+    if (pair.text.ok() && numeric(pair.val) && compare(v, pair.val) == 0) return std::string(pair.text.text);
+  return {};
+}
+
 result<void, value_refusal> check_value(const model::device& dev, const model::param& p, const number& v) {
   const auto who = fmt::format("Param{}", p.number);
   if (p.type != nullptr)

@@ -126,10 +126,9 @@ namespace {
 // Each member parameter's value in the configuration data against its type,
 // limits and EnumN; the first at fault is refused with its element's index.
 std::optional<refusal> check_config(const model::device& eds, const connection_point& p, cip::byte_view config) {
-  const cip::bytes data(config.begin(), config.end());
   for (const auto& f : p.config_fields) {
-    if (std::size_t{f.bit} + f.bits > data.size() * 8) break;
-    const auto v = connections::decode_field(f, connections::get_bits(data, f.bit, f.bits));
+    if (std::size_t{f.bit} + f.bits > config.size() * 8) break;
+    const auto v = connections::decode_field(f, connections::get_bits(config, f.bit, f.bits));
     if (auto ok = connections::check_value(eds, eds.params[f.param_index], v); !ok) {
       refusal r{ext::invalid_configuration_size,
                 {},
