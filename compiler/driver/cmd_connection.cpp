@@ -25,7 +25,8 @@ namespace {
 struct connection_cli {
   std::string input, stdin_name, which, output = "-";
   std::string format = "text";
-  std::vector<std::string> sets;  // --set NAME=VALUE, in order
+  std::vector<std::string> sets;                      // --set NAME=VALUE, in order
+  std::optional<connections::logix_type> logix_type;  // --logix-type; none: the widest unit that fits
 };
 
 using connection_choice::listed;
@@ -81,7 +82,25 @@ void warn_unused(const connections::applied_sets& applied, const std::vector<con
   }
 }
 
+// The Generic Ethernet Module rows of each connection shown; what the dialog
+// is reported to do and this connection meets warned about (UNCONFIRMED).
+std::vector<connections::logix_module> logix_modules(const std::vector<connections::connection_setting>& all,
+                                                     std::optional<connections::logix_type> type, diagnostics& diags) {
+  std::vector<connections::logix_module> out;
+  for (const auto& s : all) {
+    out.push_back(connections::logix_settings(s, type));
+    for (const auto& u : out.back().unconfirmed)
+      diags.push_back(make_diagnostic(diag_id::settings_logix_unconfirmed, s.at,
+                                      fmt::format("Connection{} \"{}\": {}", s.number, s.name, u)));
+  }
+  return out;
+}
+
 int run_connection(const connection_cli& cli) {
+  if (cli.logix_type && cli.format != "logix") {
+    print_error("--logix-type chooses the unit of --format logix; it means nothing with --format " + cli.format);
+    return exit_failure;
+  }
   if (!stdin_filename_used(io::is_stdin(cli.input), cli.stdin_name)) return exit_failure;
   if (refuse_input_as_output(cli.output, {cli.input}) != exit_ok) return exit_failure;
   const auto input_file = read_or_report(cli.input, cli.stdin_name);
@@ -118,9 +137,20 @@ int run_connection(const connection_cli& cli) {
                     fmt::format("Connection{} \"{}\": no settings: {}", it->number, it->name, it->cannot_express));
     all = {*it};
   }
+  std::vector<connections::logix_module> modules;
+  if (cli.format == "logix") {
+    modules = logix_modules(all, cli.logix_type, set_diags);
+    if (!cli.which.empty() && !modules.front().refusal.empty()) {
+      print_diags(src, set_diags);
+      return report(src, diag_id::settings_logix_cannot, all.front().at,
+                    fmt::format("Connection{} \"{}\": the Generic Ethernet Module dialog cannot take it: {}",
+                                all.front().number, all.front().name, modules.front().refusal));
+    }
+  }
   warn_unused(*applied, all, set_diags);
   print_diags(src, set_diags);
   const auto text = cli.format == "json"         ? emit::render_connections_json(all, src)
+                    : cli.format == "logix"      ? emit::render_connections_logix(all, modules, src)
                     : cli.format == "c"          ? emit::render_connections_c(all, src)
                     : cli.format == "eipscanner" ? emit::render_connections_eipscanner(all, src)
                                                  : emit::render_connections_text(all, src);
@@ -145,9 +175,16 @@ void register_connection(CLI::App& app, command_action& run) {
               return s ? std::string() : s.error();
             }),
         arg_kind::text);
-  add_choice(cmd, "--format", cli->format, {"text", "json", "c", "eipscanner"},
-             "What to write: text for a person (default), JSON, a C header with each request's bytes, or C++ "
-             "for EIPScanner");
+  add_choice(cmd, "--format", cli->format, {"text", "json", "c", "eipscanner", "logix"},
+             "What to write: text for a person (default), JSON, a C header with each request's bytes, C++ "
+             "for EIPScanner, or the rows of Studio 5000's Generic Ethernet Module dialog");
+  add_choice(cmd, "--logix-type", cli->logix_type,
+             {{"SINT", connections::logix_type::sint},
+              {"INT", connections::logix_type::int16},
+              {"DINT", connections::logix_type::dint},
+              {"REAL", connections::logix_type::real}},
+             "The comm format's element type for --format logix (default: the widest whose size divides the "
+             "input's and the output's)");
   takes(cmd->add_option("-o,--output", cli->output, "Write here ('-': standard output, the default)"),
         arg_kind::output);
   add_example(cmd, "edsc connection device.eds", "every connection's settings");

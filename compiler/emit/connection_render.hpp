@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "connections/logix.hpp"
 #include "connections/settings.hpp"
 #include "source/source_file.hpp"
 
@@ -24,6 +25,12 @@ namespace edsc::emit {
 // connection (emit/connection_eipscanner.cpp).
 [[nodiscard]] std::string render_connections_eipscanner(const std::vector<connections::connection_setting>& all,
                                                         const source_file& src);
+
+// The rows of Studio 5000's Generic Ethernet Module dialog, one module per
+// connection (`modules[i]` is `all[i]`'s; emit/connection_logix.cpp).
+[[nodiscard]] std::string render_connections_logix(const std::vector<connections::connection_setting>& all,
+                                                   const std::vector<connections::logix_module>& modules,
+                                                   const source_file& src);
 
 // Bytes as two-digit upper-case hex separated by blanks ("20 04 24 01").
 [[nodiscard]] std::string hex_bytes(const cip::bytes& b);

@@ -92,6 +92,19 @@ std::string rpi_words(const rpi_setting& r, std::string_view other) {
   return "RPI " + asked;
 }
 
+std::string config_field_lines(const connection_setting& s, std::size_t indent) {
+  std::string out;
+  for (const auto& f : s.config_fields) {
+    const auto& d = f.field;
+    const auto bits = d.bits == 1 ? fmt::format("bit {}", d.bit) : fmt::format("bits {}-{}", d.bit, d.bit + d.bits - 1);
+    out += fmt::format("{}Param{}{} = {}{} ({}){}\n", std::string(indent, ' '), d.param,
+                       d.name.empty() ? "" : fmt::format(" \"{}\"", d.name), number_text(f.value),
+                       f.enum_text.empty() ? "" : fmt::format(" \"{}\"", f.enum_text), bits,
+                       f.set ? ", set by --set" : "");
+  }
+  return out;
+}
+
 connection_summary summarize(const connection_setting& s) {
   connection_summary out;
   out.kind = fmt::format("{}{}{}", kind_words(s.kind), s.kind.configured ? ", with configuration" : "",

@@ -31,6 +31,10 @@ struct connection_summary {
 
 [[nodiscard]] connection_summary summarize(const connections::connection_setting& s);
 
+// Each member parameter of the configuration data with the value the bytes
+// hold, a line each, `indent` blanks in: "Param3 "Mode" = 1 "On" (bits 0-7)".
+[[nodiscard]] std::string config_field_lines(const connections::connection_setting& s, std::size_t indent);
+
 // The RPI of a direction; `other` names the other direction ("T->O"), whose
 // RPI an empty field takes.
 [[nodiscard]] std::string rpi_words(const connections::rpi_setting& r, std::string_view other);

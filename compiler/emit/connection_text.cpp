@@ -59,17 +59,6 @@ void key_text(std::string& out, const connection_setting& s) {
                      k.compatible ? "compatible" : "exact");
 }
 
-// Each member parameter of the configuration data with the value the bytes hold.
-void config_text(std::string& out, const connection_setting& s) {
-  for (const auto& f : s.config_fields) {
-    const auto& d = f.field;
-    const auto bits = d.bits == 1 ? fmt::format("bit {}", d.bit) : fmt::format("bits {}-{}", d.bit, d.bit + d.bits - 1);
-    out += fmt::format("    Param{}{} = {}{} ({}){}\n", d.param, d.name.empty() ? "" : fmt::format(" \"{}\"", d.name),
-                       number_text(f.value), f.enum_text.empty() ? "" : fmt::format(" \"{}\"", f.enum_text), bits,
-                       f.set ? ", set by --set" : "");
-  }
-}
-
 void one_text(std::string& out, const connection_setting& s, const source_file& src) {
   const auto lc = src.position(s.at.begin);
   const auto words = summarize(s);
@@ -85,7 +74,7 @@ void one_text(std::string& out, const connection_setting& s, const source_file& 
   if (!words.configuration.empty())
     out += fmt::format("  {:<13} {}: {}\n", "configuration", words.configuration,
                        s.config_data.empty() ? "none" : wrapped_hex(s.config_data, 16));
-  if (s.config_instance != 0) config_text(out, s);
+  if (s.config_instance != 0) out += config_field_lines(s, 4);
   if (!s.request.empty())
     out += fmt::format("  {:<13} {}, {} bytes:\n{}{}\n", "request",
                        s.large ? "Large_Forward_Open (a size over 511 bytes)" : "Forward_Open (no size over 511 bytes)",

@@ -158,6 +158,9 @@ TEST(check_cases, every_rule_has_a_triggering_case) {
       "settings-no-connections",
       "settings-unknown-connection",
       "settings-not-openable",
+      // --format logix: tests/emit/test_connection_logix.cpp.
+      "settings-logix-cannot",
+      "settings-logix-unconfirmed",
       // --set values: tests/cli/test_connection_cli.cpp and tests/emit/test_connection_overrides.cpp.
       "settings-unknown-parameter",
       "settings-value-type",
