@@ -2,15 +2,15 @@
 // type and data set, EtherNet/IP ConnectionN with its bit fields in words, and
 // the ProxyConnectN / ProxiedConnectN entries apart.
 // A ConnectionN is shown as `edsc connection` shows it, from the same
-// settings and the same words (emit/connection_summary.hpp), so the page, the
+// settings and the same words (connections/summary.hpp), so the page, the
 // command and the C header never disagree.
 #include <algorithm>
 
 #include <fmt/format.h>
 
 #include "connections/settings.hpp"
+#include "connections/summary.hpp"
 #include "doc/sheet_parts.hpp"
-#include "emit/connection_summary.hpp"
 #include "facts/header_view.hpp"
 
 namespace edsc::doc::detail {
@@ -170,8 +170,8 @@ std::string size_text(const reader& r, const value& v) {
   return r.text(v);
 }
 
-// A direction's lines as `edsc connection` prints them (emit/connection_summary.hpp).
-std::string direction_cell(const emit::direction_summary& d) {
+// A direction's lines as `edsc connection` prints them (connections/summary.hpp).
+std::string direction_cell(const connections::direction_summary& d) {
   std::string out = d.size;
   for (const auto* line : {&d.point, &d.types, &d.rpi})
     if (!line->empty()) join(out, "\n", *line);
@@ -182,7 +182,7 @@ std::string direction_cell(const emit::direction_summary& d) {
 // sizes with their header bytes, RPI range and default, instances and
 // configuration, in the command's words.
 std::vector<cell> setting_row(const reader& r, const model::connection& c, const connections::connection_setting& s) {
-  const auto words = emit::summarize(s);
+  const auto words = connections::summarize(s);
   std::string kind = words.kind;
   join(kind, "\n", words.transport);
   if (!words.owner_label.empty()) join(kind, "\n", words.owner_label + " " + words.owners);

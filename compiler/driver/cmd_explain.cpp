@@ -2,7 +2,7 @@
 // causes each and what to look at in the EDS (cip/explain.hpp, from the
 // columns of cip/codes.def); with --eds and --connection, the field of that
 // connection each extended status points at, with its numbers
-// (emit/connection_status.hpp).
+// (connections/status_site.hpp).
 #include <memory>
 #include <optional>
 
@@ -10,12 +10,12 @@
 #include <nlohmann/json.hpp>
 
 #include "cip/explain.hpp"
+#include "connections/status_site.hpp"
 #include "driver/choice.hpp"
 #include "driver/cli_model.hpp"
 #include "driver/commands.hpp"
 #include "driver/connection_choice.hpp"
 #include "driver/output.hpp"
-#include "emit/connection_status.hpp"
 
 namespace edsc::driver {
 
@@ -31,7 +31,7 @@ struct explain_cli {
 // Where each status points in the EDS, beside it; none for a status the EDS
 // plays no part in, and for every status without --eds.
 struct located {
-  emit::status_site site;
+  connections::status_site site;
   line_col at;
 };
 using sites = std::vector<std::optional<located>>;
@@ -131,7 +131,7 @@ std::string usage_problem(const explain_cli& cli, const std::vector<cip::status_
   if (cli.accepted && cli.eds.empty())
     return "--additional goes with --eds and --connection: it is compared with what the EDS says";
   const auto takes = [](const cip::status_explanation& e) {
-    return e.kind == cip::status_kind::extended && emit::takes_accepted_size(cip::extended_status{e.code});
+    return e.kind == cip::status_kind::extended && connections::takes_accepted_size(cip::extended_status{e.code});
   };
   if (cli.accepted && std::none_of(all.begin(), all.end(), takes))
     return "--additional is the size the device accepts, which only the extended statuses 0x0126, 0x0127 and "
@@ -146,8 +146,8 @@ sites sites_of(const explain_cli& cli, const std::vector<cip::status_explanation
   for (std::size_t i = 0; i < all.size(); ++i) {
     if (all[i].kind != cip::status_kind::extended) continue;
     const cip::extended_status status{all[i].code};
-    const auto accepted = emit::takes_accepted_size(status) ? cli.accepted : std::nullopt;
-    if (auto site = emit::status_site_of(f.dev, *f.src, s, status, accepted))
+    const auto accepted = connections::takes_accepted_size(status) ? cli.accepted : std::nullopt;
+    if (auto site = connections::status_site_of(f.dev, f.src.get(), s, status, accepted))
       out[i] = located{*site, f.src->position(site->where.begin)};
   }
   return out;

@@ -5,6 +5,7 @@
 // or c_string_literal (facts/c_text.hpp).
 #include <fmt/format.h>
 
+#include "connections/summary.hpp"
 #include "emit/connection_render.hpp"
 #include "facts/c_text.hpp"
 

@@ -2,6 +2,7 @@
 // the text, as numbers a tool reads back; byte strings as hex text.
 #include <nlohmann/json.hpp>
 
+#include "connections/summary.hpp"
 #include "emit/connection_render.hpp"
 
 namespace edsc::emit {

@@ -1,11 +1,11 @@
 // `edsc connection --format logix`: each connection as the rows of Studio
 // 5000's Generic Ethernet Module dialog (connections/logix.hpp decides
 // them), with the configuration bytes its configuration tag must hold. The
-// heading and owner words are connection_summary.hpp's, as in the text.
+// heading and owner words are connections/summary.hpp's, as in the text.
 #include <fmt/format.h>
 
+#include "connections/summary.hpp"
 #include "emit/connection_render.hpp"
-#include "emit/connection_summary.hpp"
 
 namespace edsc::emit {
 

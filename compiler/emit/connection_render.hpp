@@ -32,9 +32,4 @@ namespace edsc::emit {
                                                    const std::vector<connections::logix_module>& modules,
                                                    const source_file& src);
 
-// Bytes as two-digit upper-case hex separated by blanks ("20 04 24 01").
-[[nodiscard]] std::string hex_bytes(const cip::bytes& b);
-// An interval in microseconds the way a scanner's dialog asks it: "10 ms", "2.5 ms", "250 µs".
-[[nodiscard]] std::string interval_words(std::uint32_t us);
-
 }  // namespace edsc::emit

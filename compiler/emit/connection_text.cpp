@@ -1,10 +1,10 @@
 // The text of `edsc connection`: one block per ConnectionN, each line a
 // setting a scanner asks for, with the EDS field it comes from. The words
-// are connection_summary.hpp's, which the datasheet and the hover show too.
+// are connections/summary.hpp's, which the datasheet and the hover show too.
 #include <fmt/format.h>
 
+#include "connections/summary.hpp"
 #include "emit/connection_render.hpp"
-#include "emit/connection_summary.hpp"
 
 namespace edsc::emit {
 
@@ -82,18 +82,6 @@ void one_text(std::string& out, const connection_setting& s, const source_file& 
 }
 
 }  // namespace
-
-std::string hex_bytes(const cip::bytes& b) {
-  std::string out;
-  for (const auto x : b) out += fmt::format("{}{:02X}", out.empty() ? "" : " ", x);
-  return out;
-}
-
-std::string interval_words(std::uint32_t us) {
-  if (us >= 1000 && us % 1000 == 0) return fmt::format("{} ms", us / 1000);
-  if (us >= 1000 && us % 100 == 0) return fmt::format("{}.{} ms", us / 1000, (us % 1000) / 100);
-  return fmt::format("{} µs", us);
-}
 
 std::string render_connections_text(const std::vector<connection_setting>& all, const source_file& src) {
   std::string out;

@@ -8,6 +8,8 @@
 #include "cip/encap.hpp"
 #include "cip/status.hpp"
 #include "connections/plan.hpp"
+#include "connections/settings.hpp"
+#include "connections/status_site.hpp"
 #include "live/facts.hpp"
 #include "live/io.hpp"
 
@@ -33,6 +35,7 @@ struct checker {
   live_report& out;
   std::optional<cip::identity> device_id;
   bool finished_said = false;
+  std::vector<connections::connection_setting> settings;  // made at the first refusal
 
   void row(std::string check, std::string eds, std::string device, verdict v) {
     check_row r;
@@ -181,28 +184,21 @@ struct checker {
   }
   model::origin at_path(const model::connection& c) { return {0, at(c.path, c.from)}; }
 
+  // The status in ODVA's words, then what it points at in the EDS with the
+  // numbers there: the words `edsc explain --eds` prints (status_site.hpp).
   std::string refusal_words(const connection_plan& p, const connection_outcome& o) {
     const auto status = cip::describe_status(o.general, o.additional);
     if (o.general != cip::code(cip::general_status::connection_failure) || o.additional.empty()) return status;
     const extended ext{o.additional[0]};
-    const bool has_size = o.additional.size() >= 2;
-    const unsigned accepted = has_size ? o.additional[1] : 0;
-    if (ext == extended::invalid_ot_size && has_size)
-      return fmt::format("{}: the device accepts {} O->T, the EDS says {} ({}{})", status, plural(accepted, "byte"),
-                         p.request.ot.size, plural(p.facts.output_size, "data byte"),
-                         p.ot_run_idle ? " + 2 sequence + 4 run/idle" : " + 2 sequence");
-    if (ext == extended::invalid_to_size && has_size)
-      return fmt::format("{}: the device accepts {} T->O, the EDS says {} ({}{})", status, plural(accepted, "byte"),
-                         p.request.to.size, plural(p.facts.input_size, "data byte"),
-                         p.to_run_idle ? " + 2 sequence + 4 run/idle" : " + 2 sequence");
-    if (ext == extended::invalid_configuration_size || ext == extended::invalid_configuration_application_path)
-      return fmt::format("{}: refused the {} bytes of configuration the EDS gives instance {}", status,
-                         p.facts.config_size, p.facts.config_instance);
-    if (ext == extended::inconsistent_path_combination || ext == extended::invalid_consuming_path ||
-        ext == extended::invalid_producing_path || ext == extended::invalid_application_path)
-      return fmt::format("{}: the path names O->T instance {}, T->O instance {}, configuration instance {}", status,
-                         p.facts.output_instance, p.facts.input_instance, p.facts.config_instance);
-    return status;
+    if (settings.empty()) settings = connections::describe_connections(dev);
+    const auto s = std::find_if(settings.begin(), settings.end(), [&](const auto& x) {
+      return x.number == p.facts.number && x.at == p.conn->from.where;
+    });
+    if (s == settings.end()) return status;
+    std::optional<std::uint16_t> accepted;
+    if (connections::takes_accepted_size(ext) && o.additional.size() >= 2) accepted = o.additional[1];
+    const auto site = connections::status_site_of(dev, nullptr, *s, ext, accepted);
+    return site ? fmt::format("{}: {}", status, site->words) : status;
   }
 
   // A refusal that is the device's state, not the EDS's fault: another

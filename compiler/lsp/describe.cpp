@@ -4,7 +4,7 @@
 
 #include "base/plural.hpp"
 #include "connections/settings.hpp"
-#include "emit/connection_summary.hpp"
+#include "connections/summary.hpp"
 #include "model/decode.hpp"
 #include "schema/cip_types.hpp"
 
@@ -195,7 +195,7 @@ std::string string_text(const cst::tree& t, const cst::field& f) {
 
 namespace {
 
-std::string direction_item(std::string_view name, const emit::direction_summary& d) {
+std::string direction_item(std::string_view name, const connections::direction_summary& d) {
   std::string out = fmt::format("- {}: {}", name, d.size);
   for (const auto* part : {&d.point, &d.types, &d.rpi})
     if (!part->empty()) out += "; " + *part;
@@ -208,7 +208,7 @@ std::string describe_connection(const model::device& dev, const model::connectio
   if (!c.decoded) return {};  // the fields say nothing a scanner could use; their own hovers say why
   for (const auto& s : connections::describe_connections(dev)) {
     if (s.number != c.number || s.at.begin != c.from.where.begin) continue;
-    const auto w = emit::summarize(s);
+    const auto w = connections::summarize(s);
     std::string out = fmt::format("- kind: {}\n- transport: {}\n", w.kind, w.transport);
     if (!w.owner_label.empty()) out += fmt::format("- {}: {}\n", w.owner_label, w.owners);
     out += direction_item("O→T", w.ot) + direction_item("T→O", w.to);

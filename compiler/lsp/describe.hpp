@@ -29,7 +29,7 @@ namespace edsc::lsp {
 [[nodiscard]] std::string string_text(const cst::tree& t, const cst::field& f);
 // An entry's name string, when its layout has a field called `name`.
 [[nodiscard]] std::string entry_name(const cst::tree& t, const cst::entry& e, const schema::keyword_desc* k);
-// A ConnectionN as `edsc connection` says it (emit/connection_summary.hpp),
+// A ConnectionN as `edsc connection` says it (connections/summary.hpp),
 // one list item a setting; empty when the file gives it no settings (a
 // repeated number).
 [[nodiscard]] std::string describe_connection(const model::device& dev, const model::connection& c);

@@ -11,6 +11,7 @@
 #include "cip/encap.hpp"
 #include "cip/request.hpp"
 #include "connections/settings.hpp"
+#include "connections/summary.hpp"
 #include "corpus_dirs.hpp"
 #include "emit/connection_render.hpp"
 #include "emit_support.hpp"
@@ -98,7 +99,7 @@ void expect_filled_in(const filled& f, const connections::connection_setting& s)
   EXPECT_EQ(fo->to_rpi_us, s.to.rpi.asked_us);
   EXPECT_EQ(fo->ot.size, s.ot.asked.size);
   EXPECT_EQ(fo->to.size, s.to.asked.size);
-  EXPECT_EQ(emit::hex_bytes(fo->path), emit::hex_bytes(s.connection_path));
+  EXPECT_EQ(connections::hex_bytes(fo->path), connections::hex_bytes(s.connection_path));
 }
 
 TEST(ConnectionC, TheOffsetsAreTheOriginatorsFields) {

@@ -6,6 +6,7 @@
 
 #include "connections/overrides.hpp"
 #include "connections/settings.hpp"
+#include "connections/summary.hpp"
 #include "emit/connection_render.hpp"
 #include "opener_support.hpp"
 
@@ -78,7 +79,7 @@ TEST(ConnectionOverrides, DefaultsAreEncodedAtTheirBitsAsTheirTypes) {
   ASSERT_EQ(d.all.size(), 1u);
   const auto& s = d.all[0];
   // 01 | FE FF (-2, INT) | 00 00 C0 3F (1.5f = 0x3FC00000) | 09 (Param4 in the low nibble).
-  EXPECT_EQ(emit::hex_bytes(s.config_data), "01 FE FF 00 00 C0 3F 09");
+  EXPECT_EQ(connections::hex_bytes(s.config_data), "01 FE FF 00 00 C0 3F 09");
   ASSERT_EQ(s.config_fields.size(), 4u);
   EXPECT_EQ(s.config_fields[0].enum_text, "Slow");
   EXPECT_EQ(s.config_fields[1].value.integer, -2);
@@ -90,7 +91,7 @@ TEST(ConnectionOverrides, DefaultsAreEncodedAtTheirBitsAsTheirTypes) {
   EXPECT_EQ(s.config_fields[3].field.member, 4u);  // the nested assembly's first leaf
   EXPECT_FALSE(s.config_fields[0].set);
   EXPECT_EQ(s.ot.rpi.asked_us, 20000u);
-  EXPECT_EQ(emit::hex_bytes(s.app_path), "20 04 24 78 2C 64 2C 82");
+  EXPECT_EQ(connections::hex_bytes(s.app_path), "20 04 24 78 2C 64 2C 82");
 }
 
 TEST(ConnectionOverrides, ASetValueReplacesTheDefaultEverywhereItIsRead) {
@@ -99,14 +100,14 @@ TEST(ConnectionOverrides, ASetValueReplacesTheDefaultEverywhereItIsRead) {
   ASSERT_EQ(d.all.size(), 1u);
   const auto& s = d.all[0];
   // Mode "Fast" = 2; Offset 16 = 10 00; Gain 2.5f = 0x40200000; Nibble 15 = 0F.
-  EXPECT_EQ(emit::hex_bytes(s.config_data), "02 10 00 00 00 20 40 0F");
+  EXPECT_EQ(connections::hex_bytes(s.config_data), "02 10 00 00 00 20 40 0F");
   for (const auto& f : s.config_fields) EXPECT_TRUE(f.set) << f.field.param;
   EXPECT_EQ(s.config_fields[0].enum_text, "Fast");
   EXPECT_EQ(s.ot.rpi.asked_us, 50000u);  // the RPI field names Param5
   EXPECT_EQ(s.to.rpi.asked_us, 10000u);
-  EXPECT_EQ(emit::hex_bytes(s.app_path), "20 04 24 78 2C 65 2C 82");  // [Param8] in the path
+  EXPECT_EQ(connections::hex_bytes(s.app_path), "20 04 24 78 2C 65 2C 82");  // [Param8] in the path
   // The request carries what the settings say: the new path and data.
-  const auto req = emit::hex_bytes(s.request);
+  const auto req = connections::hex_bytes(s.request);
   EXPECT_NE(req.find("2C 65 2C 82 80 04 02 10 00 00 00 20 40 0F"), std::string::npos) << req;
 }
 
@@ -145,7 +146,7 @@ TEST(ConnectionOverrides, AValueEnumNDoesNotListIsUsedAndWarnedAbout) {
   ASSERT_EQ(d.applied->warnings.size(), 1u);
   EXPECT_EQ(d.applied->warnings[0].value, value_fault::enumeration);
   EXPECT_NE(d.applied->warnings[0].message.find("0 \"Off\", 1 \"Slow\", 2 \"Fast\""), std::string::npos);
-  EXPECT_EQ(emit::hex_bytes(d.all[0].config_data).substr(0, 2), "03");
+  EXPECT_EQ(connections::hex_bytes(d.all[0].config_data).substr(0, 2), "03");
 }
 
 TEST(ConnectionOverrides, UsesParamFollowsFieldsPathsAndNestedAssemblies) {

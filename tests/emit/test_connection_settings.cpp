@@ -12,6 +12,7 @@
 #include "cip/connection_manager.hpp"
 #include "cip/request.hpp"
 #include "connections/settings.hpp"
+#include "connections/summary.hpp"
 #include "corpus_dirs.hpp"
 #include "emit/connection_render.hpp"
 #include "opener_support.hpp"
@@ -23,7 +24,7 @@ using connections::connection_setting;
 using connections::path_role;
 using connections::rpi_source;
 
-std::string hex(const cip::bytes& b) { return emit::hex_bytes(b); }
+std::string hex(const cip::bytes& b) { return connections::hex_bytes(b); }
 
 std::vector<connection_setting> settings_of(const opener_case& c) { return connections::describe_connections(c.dev); }
 

@@ -171,14 +171,14 @@ TEST_F(live_fake_device, verify_takes_an_assembly_size_of_one_byte_for_no_size) 
 
 // A refusal for the configuration (extended status 0x0129) is told with
 // the configuration's size and instance (Assem151: 10 bytes, instance 151);
-// one for a path (0x012A) with the instances of Connection1's path
-// (20 04 24 97 2C 96 2C 64).
+// one for the consuming path (0x012A) with the O->T point of Connection1's
+// path (20 04 24 97 2C 96 2C 64), in the words `edsc explain --eds` uses.
 TEST_F(live_fake_device, a_refusal_is_told_with_the_eds_values_it_concerns) {
   const auto eds = std::string(EDSC_SHARED_DIR) + "/opener/data/opener_sample_app.eds";
   for (const auto& [ext, words] :
-       {std::pair<std::uint16_t, const char*>{0x0129,
-                                              "refused the 10 bytes of configuration the EDS gives instance 151"},
-        {0x012A, "the path names O->T instance 150, T->O instance 100, configuration instance 151"}}) {
+       {std::pair<std::uint16_t, const char*>{
+            0x0129, "the path names configuration instance 151 (24 97); 10 bytes of configuration data go with it"},
+        {0x012A, "the path names O->T connection point 150 (2C 96): the output assembly"}}) {
     SCOPED_TRACE(ext);
     loopback_server device(
         [ext](int s, const std::atomic<bool>& stop) { fake_device(s, stop, {.open_refused = ext}); });

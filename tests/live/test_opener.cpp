@@ -159,13 +159,15 @@ const fault faults[] = {
     {"wrong_product_code", "Device.ProdCode=65002", "ProdCode = 65002", "", "0x0114"},
     {"wrong_major_revision", "Device.MajRev=3", "MajRev = 3", "", "0x0116"},
     {"ot_size_33", "Connection Manager.Connection1.ot_size=33", "Param4,33,Assem150", "Connection1",
-     "extended 0x0127 invalid O->T size (additional 0x0026): the device accepts 38 bytes O->T, the EDS says 39"},
+     "extended 0x0127 invalid O->T size (additional 0x0026): the device accepts 38 bytes O->T; the EDS says 33 + 2 "
+     "sequence + 4 run/idle = 39 (with the same headers, the device wants 32 data bytes)"},
     {"to_size_16", "Connection Manager.Connection1.to_size=16", "Param4,16,Assem100", "Connection1",
-     "extended 0x0128 invalid T->O size (additional 0x0022): the device accepts 34 bytes T->O, the EDS says 18"},
+     "extended 0x0128 invalid T->O size (additional 0x0022): the device accepts 34 bytes T->O; the EDS says 16 + 2 "
+     "sequence = 18 (with the same headers, the device wants 32 data bytes)"},
     {"wrong_instance_in_path", "Connection Manager.Connection1.path=\"20 04 24 97 2C 96 2C 65\"", "2C 96 2C 65",
      "Connection1", "0x012F"},
     {"config_size_refused", "Connection Manager.Connection1.target_config_size=12", ",,12", "Connection1",
-     "refused the 12 bytes of configuration"},
+     "the path names configuration instance 151 (24 97); 12 bytes of configuration data go with it"},
     {"assembly_size", "Assembly.Assem100.size=16", "16,", "Assem100", "holds 32 bytes on the device, Assem100 says 16"},
     {"minor_revision_newer", "Device.MinRev=4", "MinRev = 4", "", "compatible keying refuses it too"},
     // Assem100 gets a path of its own naming instance 101, which OpENer lacks (0x05).

@@ -109,12 +109,15 @@ const fault faults[] = {
     {"wrong_product_code", "Device.ProdCode=65002", "extended 0x0114 vendor id or product code mismatch"},
     {"wrong_major_revision", "Device.MajRev=3", "0x0116 revision mismatch"},
     {"ot_size_33", "Connection Manager.Connection1.ot_size=33",
-     "extended 0x0127 invalid O->T size (additional 0x0026): the device accepts 38 bytes O->T, the EDS says 39"},
+     "extended 0x0127 invalid O->T size (additional 0x0026): the device accepts 38 bytes O->T; the EDS says 33 + 2 "
+     "sequence + 4 run/idle = 39 (with the same headers, the device wants 32 data bytes)"},
     {"to_size_16", "Connection Manager.Connection1.to_size=16",
-     "extended 0x0128 invalid T->O size (additional 0x0022): the device accepts 34 bytes T->O, the EDS says 18"},
+     "extended 0x0128 invalid T->O size (additional 0x0022): the device accepts 34 bytes T->O; the EDS says 16 + 2 "
+     "sequence = 18 (with the same headers, the device wants 32 data bytes)"},
     {"wrong_instance_in_path", "Connection Manager.Connection1.path=\"20 04 24 97 2C 96 2C 65\"", "0x012F"},
     {"config_size_refused", "Connection Manager.Connection1.target_config_size=12",
-     "refused the 12 bytes of configuration"},
+     "the device accepts 5: 10 bytes in the 16-bit words of the data segment (as edsc sim counts), 5 if it counts "
+     "bytes; the EDS gives 12 bytes of configuration data for instance 151"},
 };
 
 INSTANTIATE_TEST_SUITE_P(faults, sim_fault, ::testing::ValuesIn(faults),

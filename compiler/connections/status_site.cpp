@@ -1,26 +1,22 @@
 // Connection Manager statuses against one ConnectionN: each family of status
 // names its field of the EDS (EDS_FORMAT.md §3.11 numbers them as
-// cip/codes.def does) and the numbers there (connection_status.hpp).
-#include "emit/connection_status.hpp"
+// cip/codes.def does) and the numbers there (status_site.hpp).
+#include "connections/status_site.hpp"
 
 #include <fmt/format.h>
 
-#include "emit/connection_render.hpp"
-#include "emit/connection_summary.hpp"
+#include "connections/summary.hpp"
 
-namespace edsc::emit {
+namespace edsc::connections {
 
 namespace {
 
-using connections::connection_setting;
-using connections::direction_setting;
-using connections::path_role;
 using ext = cip::extended_status;
 
 // What one status is read against: the connection's entry and settings.
 struct site_context {
   const model::device& dev;
-  const source_file& src;
+  const source_file* src;  // none: no line numbers in the words
   const model::connection& c;
   const connection_setting& s;
   std::optional<std::uint16_t> accepted;
@@ -86,11 +82,11 @@ status_site config_size_site(const site_context& x) {
 }
 
 // A limit of an RPI parameter, with the line of the parameter.
-std::string rpi_side(const site_context& x, const connections::rpi_setting& r, std::string_view other) {
+std::string rpi_side(const site_context& x, const rpi_setting& r, std::string_view other) {
   auto out = rpi_words(r, other);
-  if (r.source != connections::rpi_source::param) return out;
-  if (const auto* p = x.dev.find_param(r.param))
-    out += fmt::format(", Param{} at line {}", r.param, x.src.position(p->from.where.begin).line);
+  if (r.source != rpi_source::param) return out;
+  if (const auto* p = x.dev.find_param(r.param); p != nullptr && x.src != nullptr)
+    out += fmt::format(", Param{} at line {}", r.param, x.src->position(p->from.where.begin).line);
   return out;
 }
 
@@ -99,8 +95,8 @@ status_site rpi_site(const site_context& x) {
   auto out = written(x.c.ot_rpi) || !written(x.c.to_rpi) ? at_field(x, x.c.ot_rpi, 3, "O->T RPI")
                                                          : at_field(x, x.c.to_rpi, 6, "T->O RPI");
   const auto &ot = x.s.ot.rpi, &to = x.s.to.rpi;
-  const bool one = ot.source == to.source && ot.param == to.param && ot.asked_us == to.asked_us &&
-                   ot.source != connections::rpi_source::other;
+  const bool one =
+      ot.source == to.source && ot.param == to.param && ot.asked_us == to.asked_us && ot.source != rpi_source::other;
   out.words = one ? fmt::format("a scanner configured from the EDS asks {} both ways: {}", interval_words(ot.asked_us),
                                 rpi_side(x, ot, "T->O"))
                   : fmt::format("a scanner configured from the EDS asks O->T {} and T->O {}; O->T {}; T->O {}",
@@ -217,7 +213,7 @@ bool takes_accepted_size(ext status) {
   return status == ext::invalid_configuration_size || status == ext::invalid_ot_size || status == ext::invalid_to_size;
 }
 
-std::optional<status_site> status_site_of(const model::device& dev, const source_file& src, const connection_setting& s,
+std::optional<status_site> status_site_of(const model::device& dev, const source_file* src, const connection_setting& s,
                                           ext status, std::optional<std::uint16_t> accepted) {
   const model::connection* c = nullptr;
   for (const auto& x : dev.connections)
@@ -257,4 +253,4 @@ std::optional<status_site> status_site_of(const model::device& dev, const source
   }
 }
 
-}  // namespace edsc::emit
+}  // namespace edsc::connections

@@ -13,7 +13,7 @@
 #include "connections/settings.hpp"
 #include "source/source_file.hpp"
 
-namespace edsc::emit {
+namespace edsc::connections {
 
 struct status_site {
   span where;         // the field; the entry where the field is empty
@@ -27,10 +27,11 @@ struct status_site {
 
 // Where `status` points in the EDS for the connection `s`, with `accepted`
 // the reply's second additional word (takes_accepted_size); none where the
-// EDS plays no part in the status.
-[[nodiscard]] std::optional<status_site> status_site_of(const model::device& dev, const source_file& src,
-                                                        const connections::connection_setting& s,
-                                                        cip::extended_status status,
+// EDS plays no part in the status. `src`, where given, adds the lines of the
+// fields the words name (an RPI parameter's). `edsc explain --eds` and
+// `verify --live` both say a refusal with it.
+[[nodiscard]] std::optional<status_site> status_site_of(const model::device& dev, const source_file* src,
+                                                        const connection_setting& s, cip::extended_status status,
                                                         std::optional<std::uint16_t> accepted);
 
-}  // namespace edsc::emit
+}  // namespace edsc::connections

@@ -1,18 +1,14 @@
 // The words of one connection's settings, shared by `edsc connection`, the
-// datasheet and the hover (connection_summary.hpp).
-#include "emit/connection_summary.hpp"
+// datasheet and the hover (summary.hpp).
+#include "connections/summary.hpp"
 
 #include <fmt/format.h>
 
 #include "base/plural.hpp"
 
-#include "emit/connection_render.hpp"
-
-namespace edsc::emit {
+namespace edsc::connections {
 
 namespace {
-
-using namespace connections;
 
 std::string joined(const std::vector<std::string>& words) {
   std::string out;
@@ -65,6 +61,18 @@ void owners_of(const connection_setting& s, connection_summary& out) {
 }
 
 }  // namespace
+
+std::string hex_bytes(const cip::bytes& b) {
+  std::string out;
+  for (const auto x : b) out += fmt::format("{}{:02X}", out.empty() ? "" : " ", x);
+  return out;
+}
+
+std::string interval_words(std::uint32_t us) {
+  if (us >= 1000 && us % 1000 == 0) return fmt::format("{} ms", us / 1000);
+  if (us >= 1000 && us % 100 == 0) return fmt::format("{}.{} ms", us / 1000, (us % 1000) / 100);
+  return fmt::format("{} µs", us);
+}
 
 std::string range_words(std::uint32_t min_us, std::uint32_t max_us) {
   const auto lo = interval_words(min_us), hi = interval_words(max_us);
@@ -122,4 +130,4 @@ connection_summary summarize(const connection_setting& s) {
   return out;
 }
 
-}  // namespace edsc::emit
+}  // namespace edsc::connections

@@ -3,13 +3,13 @@
 // connection`'s text (connection_text.cpp) prints these lines with the bytes
 // around them, the datasheet (doc/sheet_connections.cpp) and the language
 // server's hover over a ConnectionN print them alone. Built from
-// connections::connection_setting, so none of them reads the EDS fields anew.
+// connection_setting, so none of them reads the EDS fields anew.
 #include <string>
 #include <string_view>
 
 #include "connections/settings.hpp"
 
-namespace edsc::emit {
+namespace edsc::connections {
 
 // One direction: "4 data + 2 sequence + 4 run/idle = 10 bytes, fixed";
 // "instance 150, 32-bit run/idle header"; "point-to-point (offered: ...),
@@ -29,16 +29,21 @@ struct connection_summary {
   std::string note;           // why no Forward_Open can be built; empty when it can
 };
 
-[[nodiscard]] connection_summary summarize(const connections::connection_setting& s);
+// Bytes as two-digit upper-case hex separated by blanks ("20 04 24 01").
+[[nodiscard]] std::string hex_bytes(const cip::bytes& b);
+// An interval in microseconds the way a scanner's dialog asks it: "10 ms", "2.5 ms", "250 µs".
+[[nodiscard]] std::string interval_words(std::uint32_t us);
+
+[[nodiscard]] connection_summary summarize(const connection_setting& s);
 
 // Each member parameter of the configuration data with the value the bytes
 // hold, a line each, `indent` blanks in: "Param3 "Mode" = 1 "On" (bits 0-7)".
-[[nodiscard]] std::string config_field_lines(const connections::connection_setting& s, std::size_t indent);
+[[nodiscard]] std::string config_field_lines(const connection_setting& s, std::size_t indent);
 
 // The RPI of a direction; `other` names the other direction ("T->O"), whose
 // RPI an empty field takes.
-[[nodiscard]] std::string rpi_words(const connections::rpi_setting& r, std::string_view other);
+[[nodiscard]] std::string rpi_words(const rpi_setting& r, std::string_view other);
 // "1–1000 ms", "500 µs–20 ms": an interval's bounds, the unit once where they share it.
 [[nodiscard]] std::string range_words(std::uint32_t min_us, std::uint32_t max_us);
 
-}  // namespace edsc::emit
+}  // namespace edsc::connections
