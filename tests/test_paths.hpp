@@ -15,6 +15,8 @@ extern const char* const corpus_rockwell_dir;
 extern const char* const captures_dir;
 extern const char* const opener_source_dir;
 extern const char* const opener_binary;
+extern const char* const eipscanner_library;
+extern const char* const cxx_compiler;
 extern const char* const stack_build_dir;
 extern const char* const install_docdir;
 extern const char* const install_datadir;
@@ -29,6 +31,8 @@ extern const char* const install_datadir;
 #define EDSC_CAPTURES_DIR (::edsc::test_paths::captures_dir)
 #define EDSC_OPENER_SOURCE_DIR (::edsc::test_paths::opener_source_dir)
 #define EDSC_OPENER_BINARY (::edsc::test_paths::opener_binary)
+#define EDSC_EIPSCANNER_LIBRARY (::edsc::test_paths::eipscanner_library)
+#define EDSC_CXX_COMPILER (::edsc::test_paths::cxx_compiler)
 #define EDSC_STACK_BUILD_DIR (::edsc::test_paths::stack_build_dir)
 #define EDSC_INSTALL_DOCDIR (::edsc::test_paths::install_docdir)
 #define EDSC_INSTALL_DATADIR (::edsc::test_paths::install_datadir)

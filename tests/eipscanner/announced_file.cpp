@@ -20,15 +20,6 @@ bool ends_with(const bytes& whole, const bytes& tail) {
   return whole.size() >= tail.size() && std::equal(tail.begin(), tail.end(), whole.end() - tail.size());
 }
 
-// The owner a listen-only connection is opened beside: the first the JSON
-// names that has a request.
-const announced_connection* owner_of(const announced_connection& c, const std::vector<announced_connection>& all) {
-  for (const auto n : c.owners)
-    for (const auto& o : all)
-      if (o.number == n && o.expressible) return &o;
-  return nullptr;
-}
-
 // Why `c` cannot be opened before anything is sent, or "".
 std::string before_opening(const announced_connection& c, const std::vector<announced_connection>& all) {
   // The pieces a scanner is told to send must be the path of the request edsc announces.
@@ -40,6 +31,13 @@ std::string before_opening(const announced_connection& c, const std::vector<anno
 }
 
 }  // namespace
+
+const announced_connection* owner_of(const announced_connection& c, const std::vector<announced_connection>& all) {
+  for (const auto n : c.owners)
+    for (const auto& o : all)
+      if (o.number == n && o.expressible) return &o;
+  return nullptr;
+}
 
 std::vector<announced_connection> announce(const std::string& file, std::string& error) {
   const auto cmd = quoted(EDSC_BINARY) + " connection " + quoted(file) + " --format json";

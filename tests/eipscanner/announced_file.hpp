@@ -16,6 +16,10 @@ namespace edsc::scanner_test {
 // when edsc fails or the JSON cannot be read.
 std::vector<announced_connection> announce(const std::string& file, std::string& error);
 
+// The owner a listen-only connection is opened beside: the first the JSON
+// names that has a request; null when none has.
+const announced_connection* owner_of(const announced_connection& c, const std::vector<announced_connection>& all);
+
 // "FILE.eds:N" (the file's name without folders) -> why EIPScanner cannot
 // open ConnectionN, from the list `name` of tests/eipscanner.
 using reviewed = std::map<std::string, std::string>;

@@ -129,8 +129,9 @@ std::string log_after_close(const std::string& path, std::pair<long, unsigned>& 
   return log;
 }
 
-// What the simulator logged of ConnectionN's O->T frames against the announcement.
-std::string check_log(const std::string& path, const announced_connection& c) {
+}  // namespace
+
+std::string simulator_took(const std::string& path, const announced_connection& c) {
   std::pair<long, unsigned> opened;
   const auto log = log_after_close(path, opened);
   const auto [serial, number] = opened;
@@ -146,6 +147,8 @@ std::string check_log(const std::string& path, const announced_connection& c) {
            hex(pattern(c.ot.data_size));
   return {};
 }
+
+namespace {
 
 // Opens `c` (after `owner`), runs I/O and closes; the failure or "".
 std::string open_run_close(const std::string& ip, const announced_connection& c, const announced_connection* owner,
@@ -194,7 +197,7 @@ open_outcome open_announced(const std::string& ip, const announced_connection& c
     out.failure = tag + std::to_string(f.wrong) + " T->O frames of " + std::to_string(f.wrong_size) +
                   " data bytes, announced " + std::to_string(c.to.data_size);
   } else if (!sim_log.empty()) {
-    out.failure = check_log(sim_log, c);
+    out.failure = simulator_took(sim_log, c);
   }
   return out;
 }

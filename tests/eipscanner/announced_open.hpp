@@ -23,4 +23,9 @@ struct open_outcome {
 open_outcome open_announced(const std::string& ip, const announced_connection& c, const announced_connection* owner,
                             const std::string& sim_log);
 
+// What the simulator's event log in the file `sim_log` says of `c`, the last
+// connection opened there, once it is closed: its O->T frames taken at the
+// announced size, the data 0xA0, 0xA1, ... as sent; "" when all is so.
+std::string simulator_took(const std::string& sim_log, const announced_connection& c);
+
 }  // namespace edsc::scanner_test
