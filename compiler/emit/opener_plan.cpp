@@ -136,8 +136,13 @@ class planner {
               [](const auto& a, const auto& b) { return a.instance < b.instance; });
     if (consumed_.seen) plan.consumed_run_idle = consumed_.run_idle;
     if (produced_.seen) plan.produced_run_idle = produced_.run_idle;
-    for (const auto& a : plan.assemblies)
-      plan.ethernet_buffer_bytes = std::max(plan.ethernet_buffer_bytes, a.size + opener_buffer_headroom);
+    for (const auto& a : plan.assemblies) {
+      const bool configuration = std::any_of(plan.points.begin(), plan.points.end(),
+                                             [&](const opener_point& p) { return p.config_instance == a.instance; });
+      const auto needed = a.size + (configuration ? opener_forward_open_headroom : opener_buffer_headroom);
+      // The 16-bit encapsulation length bounds every message.
+      plan.ethernet_buffer_bytes = std::max(plan.ethernet_buffer_bytes, std::min<std::uint32_t>(needed, 65535));
+    }
   }
 
   opener_plan plan;

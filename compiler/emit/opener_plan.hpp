@@ -18,8 +18,15 @@ namespace edsc::emit {
 // or an explicit message's (encapsulation 24, CPF 16, request path or reply
 // header 10). The generated project raises the option when its largest
 // assembly needs it; the 16-bit encapsulation length bounds it.
+// A configuration assembly's data travels in the Forward_Open itself, with
+// more around it: encapsulation and CPF 40, the request's service and path
+// 6, the large form's fields 40, the key 10, three 16-bit connection points
+// 12, the data segment's header and pad 3 (111; EIPScanner's request with
+// 408 bytes of data is 514), and 15 more when a scanner routes it through
+// Unconnected Send. OpENer drops a message over its buffer without a reply.
 inline constexpr std::uint32_t opener_default_buffer_bytes = 512;
 inline constexpr std::uint32_t opener_buffer_headroom = 64;
+inline constexpr std::uint32_t opener_forward_open_headroom = 128;
 inline constexpr std::uint32_t opener_max_assembly_bytes = 65535 - opener_buffer_headroom;
 
 struct opener_assembly {

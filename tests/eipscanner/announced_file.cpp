@@ -1,10 +1,12 @@
 #include "announced_file.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 
 #include "announced_open.hpp"
+#include "corpus_dirs.hpp"
 #include "netns/live_support.hpp"
 #include "netns/run_edsc.hpp"
 #include "test_paths.hpp"
@@ -30,6 +32,19 @@ std::string before_opening(const announced_connection& c, const std::vector<anno
   return {};
 }
 
+// A line `ConnectionN =` (any spaces around): cheaper than a regex, as
+// every process of this folder's tests lists the corpus files at start.
+bool names_a_connection(const std::string& line) {
+  auto at = line.find_first_not_of(" \t");
+  if (at == std::string::npos || line.compare(at, 10, "Connection") != 0) return false;
+  at += 10;
+  const auto digits = at;
+  while (at < line.size() && std::isdigit(static_cast<unsigned char>(line[at]))) ++at;
+  if (at == digits) return false;
+  at = line.find_first_not_of(" \t", at);
+  return at != std::string::npos && line[at] == '=';
+}
+
 }  // namespace
 
 const announced_connection* owner_of(const announced_connection& c, const std::vector<announced_connection>& all) {
@@ -37,6 +52,19 @@ const announced_connection* owner_of(const announced_connection& c, const std::v
     for (const auto& o : all)
       if (o.number == n && o.expressible) return &o;
   return nullptr;
+}
+
+std::vector<std::filesystem::path> files_with_connections() {
+  std::vector<std::filesystem::path> out;
+  for (const auto& f : corpora::sample()) {
+    std::ifstream in(f);
+    for (std::string line; std::getline(in, line);)
+      if (names_a_connection(line)) {
+        out.push_back(f);
+        break;
+      }
+  }
+  return out;
 }
 
 std::vector<announced_connection> announce(const std::string& file, std::string& error) {

@@ -4,6 +4,7 @@
 // except those tests/eipscanner/announced_not_opened.txt lists with the
 // reason (announced_not_opened_opener.txt on the generated OpENer device):
 // each listed one must still fail, so the list stays true.
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
@@ -11,6 +12,10 @@
 #include "announced.hpp"
 
 namespace edsc::scanner_test {
+
+// The corpus-wide sample (every file in Release, corpus_dirs.hpp) of the
+// files with a ConnectionN.
+std::vector<std::filesystem::path> files_with_connections();
 
 // `edsc connection FILE --format json`, read back; empty with `error` set
 // when edsc fails or the JSON cannot be read.

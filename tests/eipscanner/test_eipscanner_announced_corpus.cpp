@@ -13,8 +13,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <regex>
 #include <thread>
 
 #include "announced_file.hpp"
@@ -25,18 +23,6 @@ namespace edsc::scanner_test {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The corpus-wide sample (every file in Release) of files with a ConnectionN.
-std::vector<fs::path> files_with_connections() {
-  std::vector<fs::path> out;
-  const std::regex connection(R"(^\s*Connection[0-9]+\s*=)", std::regex::multiline);
-  for (const auto& f : corpora::sample()) {
-    std::ifstream in(f);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (std::regex_search(text, connection)) out.push_back(f);
-  }
-  return out;
-}
 
 bool has_syntax_errors(const fs::path& f) {
   return std::find(std::begin(corpora::broken), std::end(corpora::broken), f.filename().string()) !=

@@ -266,6 +266,19 @@ TEST(OpenerPlan, OpENersBufferGrowsWithTheLargestAssemblyOnly) {
   EXPECT_EQ(buffer(conn{.ot_size = "520", .ot_format = "", .to_size = "600", .to_format = ""}), 664u);
 }
 
+TEST(OpenerPlan, AConfigurationAssemblyGrowsTheBufferByTheForwardOpenAroundIt) {
+  // Its data arrives inside the Forward_Open: 128 bytes around it, so 384
+  // fits the default 512 and 385 needs 513 (as an input of 449 does).
+  const auto buffer = [](const char* size) {
+    conn c1{.config_format = "Assem121", .path = "\"20 04 24 79 2C 64 2C 82\""};
+    return plan_connections({c1}, fmt::format("    Assem121 = \"Cfg2\", \"\", {}, 0x0001, , ;\n", size))
+        ->plan.ethernet_buffer_bytes;
+  };
+  EXPECT_EQ(buffer("384"), 512u);
+  EXPECT_EQ(buffer("385"), 513u);
+  EXPECT_EQ(buffer("408"), 536u);  // the corpus file whose Forward_Open OpENer dropped at 512
+}
+
 TEST(OpenerPlan, AnAssemblyOverTheEncapsulationLengthIsRefused) {
   // The 16-bit encapsulation length less 64 bytes of headers: 65471 fits, 65472 does not.
   {
