@@ -45,20 +45,15 @@ std::string direction_fields(std::string_view dir, const direction_setting& d, b
 
 void one_c(std::string& out, const connection_setting& s, const source_file& src) {
   const auto n = s.number;
-  out += fmt::format("\n/* Connection{} \"{}\" (line {}): {}, class 1, {} */\n", n, comment_text(s.name),
-                     src.position(s.at.begin).line, kind_words(s.kind), comment_text(s.trigger_asked));
+  const auto words = summarize(s);
+  out += fmt::format("\n/* Connection{} \"{}\" (line {}): {}; {} */\n", n, comment_text(s.name),
+                     src.position(s.at.begin).line, comment_text(words.kind), comment_text(words.transport));
   if (s.request.empty()) {
     out += fmt::format("/* no request: {} */\n", comment_text(s.cannot_express));
     return;
   }
-  if (!s.owners.empty()) {
-    std::string owners;
-    for (const auto o : s.owners) owners += fmt::format("{}Connection{}", owners.empty() ? "" : ", ", o);
-    out += fmt::format(
-        "/* {}: {} */\n",
-        s.kind.type == model::app_type::listen_only ? "opens only while one of these runs" : "shares its input with",
-        owners);
-  }
+  if (!words.owner_label.empty())
+    out += fmt::format("/* {} {} */\n", comment_text(words.owner_label), comment_text(words.owners));
   out += array(fmt::format("edsc_connection{}_request", n), s.request);
   out += array(fmt::format("edsc_connection{}_path", n), s.connection_path);
   out += array(fmt::format("edsc_connection{}_config", n), s.config_data);

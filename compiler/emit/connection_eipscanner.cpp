@@ -6,6 +6,7 @@
 // configuration data rides in the connection path's data segment.
 #include <fmt/format.h>
 
+#include "connections/summary.hpp"
 #include "emit/connection_render.hpp"
 #include "facts/c_text.hpp"
 
@@ -31,20 +32,15 @@ std::uint32_t data_word(const direction_setting& d, bool large) {
 
 void one_function(std::string& out, const connection_setting& s, const source_file& src) {
   const auto n = s.number;
-  out += fmt::format("\n// Connection{} \"{}\" (line {}): {}, class 1, {}.\n", n, comment_text(s.name),
-                     src.position(s.at.begin).line, kind_words(s.kind), comment_text(s.trigger_asked));
+  const auto words = summarize(s);
+  out += fmt::format("\n// Connection{} \"{}\" (line {}): {}; {}.\n", n, comment_text(s.name),
+                     src.position(s.at.begin).line, comment_text(words.kind), comment_text(words.transport));
   if (s.request.empty()) {
     out += fmt::format("// Not written: {}.\n", comment_text(s.cannot_express));
     return;
   }
-  if (!s.owners.empty()) {
-    std::string owners;
-    for (const auto o : s.owners) owners += fmt::format("{}connection{}()", owners.empty() ? "" : ", ", o);
-    out += fmt::format("// {} {}.\n",
-                       s.kind.type == model::app_type::listen_only ? "Opens only while one of these is open:"
-                                                                   : "Shares its input with",
-                       owners);
-  }
+  if (!words.owner_label.empty())
+    out += fmt::format("// {} {}.\n", comment_text(words.owner_label), comment_text(words.owners));
   out += fmt::format("constexpr bool connection{}_large = {};  // forwardOpen's isLarge\n", n, s.large);
   out += fmt::format("inline ConnectionParameters connection{}() {{\n  ConnectionParameters p;\n", n);
   out += fmt::format("  // Key, application path{}.\n  p.connectionPath = {{{}}};\n",
