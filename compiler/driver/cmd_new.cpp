@@ -1,8 +1,6 @@
 #include <algorithm>
-#include <fstream>
 #include <functional>
 #include <memory>
-#include <sstream>
 
 #include <fmt/format.h>
 
@@ -59,16 +57,13 @@ int run_new(new_options opt) {
   }
   if (!opt.from.empty() && refuse_input_as_output(opt.output, {opt.from}) != exit_ok) return exit_failure;
   if (!opt.from.empty()) {
-    std::ifstream in(opt.from, std::ios::binary);
-    if (!in) {
-      print_error(fmt::format("{}: cannot read the device description", opt.from));
-      return exit_failure;
-    }
-    std::stringstream ss;
-    ss << in.rdbuf();
+    // Read as every input is (io/read_file.hpp): a directory, a device or an
+    // unreadable path is refused with why, `-` is standard input.
+    const auto from = read_or_report(opt.from);
+    if (!from) return exit_failure;
     // The file is a template: whatever the command line says wins, so a
     // build can pin the date or one file serve a family of products.
-    auto spec = edit::spec_from_json(ss.str(), opt.given_keys);
+    auto spec = edit::spec_from_json(std::string(from->text()), opt.given_keys);
     if (!spec) {
       print_error(spec.error().what());
       return exit_failure;

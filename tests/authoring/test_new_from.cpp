@@ -103,6 +103,16 @@ TEST_F(NewOptions, RequiredKeysMayComeFromTheCommandLine) {
   EXPECT_EQ(r.out, "");
 }
 
+// --from is read as every input is: a directory is refused as one, not
+// taken for JSON that does not parse.
+TEST_F(NewOptions, TheJsonIsReadAsEveryInputIs) {
+  auto r = run({"new", "--from", dir_.string()});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("is a directory"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("does not parse"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out, "");
+}
+
 // Two spellings of one option at once would leave one of them unused.
 TEST_F(NewOptions, AnOptionAndItsOldSpellingAreRefusedTogether) {
   auto r = make({"--input", "5"});  // make() gives --input-bytes too
