@@ -63,6 +63,18 @@ status_site size_site(const site_context& x, bool ot) {
   return out;
 }
 
+// 0x0130, 0x0131: the assembly a direction carries and the real-time
+// format field 2 gives it.
+status_site format_site(const site_context& x, bool ot) {
+  const auto& d = ot ? x.s.ot : x.s.to;
+  const auto* dir = ot ? "O->T" : "T->O";
+  auto out = at_field(x, ot ? x.c.ot_format : x.c.to_format, ot ? 5 : 8, fmt::format("{} format", dir));
+  out.words = d.used ? fmt::format("the EDS gives {} {} data bytes in the {} format (bits {} of field 2): {} bytes",
+                                   dir, d.data_size, format_words(d.format), ot ? "8-10" : "12-14", sum_words(d))
+                     : fmt::format("the EDS gives {} no data: a null connection", dir);
+  return out;
+}
+
 // 0x0126: the configuration size, in the data segment's 16-bit words.
 status_site config_size_site(const site_context& x) {
   auto out = written(x.c.target_config_size) ? at_field(x, x.c.target_config_size, 11, "configuration size")
@@ -224,6 +236,8 @@ std::optional<status_site> status_site_of(const model::device& dev, const source
     case ext::invalid_ot_size: return size_site(x, true);
     case ext::invalid_to_size: return size_site(x, false);
     case ext::invalid_configuration_size: return config_size_site(x);
+    case ext::inconsistent_consume_format: return format_site(x, true);
+    case ext::inconsistent_produce_format: return format_site(x, false);
     case ext::rpi_not_supported:
     case ext::rpi_not_acceptable: return rpi_site(x);
     case ext::vendor_or_product_code_mismatch:

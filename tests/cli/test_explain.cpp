@@ -311,6 +311,12 @@ TEST_F(ExplainEds, EachStatusPointsAtItsField) {
        "the EDS gives 10 bytes of configuration data for instance 151"},
       {"0x0127", "1", 222, "Connection1 field 5 (O->T format, the assembly whose size it is)",
        "the EDS says 32 + 2 sequence + 4 run/idle = 38 bytes O->T"},
+      {"0x0130", "1", 222, "Connection1 field 5 (O->T format)",
+       "the EDS gives O->T 32 data bytes in the 32-bit run/idle header format (bits 8-10 of field 2): 32 + 2 sequence "
+       "+ 4 run/idle = 38 bytes"},
+      {"0x0131", "1", 223, "Connection1 field 8 (T->O format)",
+       "the EDS gives T->O 32 data bytes in the modeless (pure data) format (bits 12-14 of field 2): 32 + 2 sequence "
+       "= 34 bytes"},
       {"0x0129", "1", 228, "Connection1 field 15 (connection path)",
        "the path names configuration instance 151 (24 97); 10 bytes of configuration data go with it"},
       {"0x012A", "1", 228, "Connection1 field 15 (connection path)",
