@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "connections/fields.hpp"
 #include "diag/render_text.hpp"
 #include "driver/commands.hpp"
 #include "driver/output.hpp"
@@ -15,20 +16,24 @@ namespace edsc::driver::connection_choice {
 
 namespace {
 
-bool same_name(std::string_view a, std::string_view b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
-         });
+// A name as the EDS writes it, without the blanks some vendors pad it with
+// ("Exclusive Owner ").
+std::string_view trimmed(std::string_view s) {
+  const auto first = s.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  return s.substr(first, s.find_last_not_of(" \t") - first + 1);
 }
 
 }  // namespace
 
 bool names(const connections::connection_setting& s, std::string_view which) {
   std::string_view n = which;
+  // One rule with --set's parameter names: any case, `_` for a blank.
+  using connections::same_name;
   if (n.size() > 10 && same_name(n.substr(0, 10), "connection")) n.remove_prefix(10);
   if (!n.empty() && n.find_first_not_of("0123456789") == std::string_view::npos && n.size() <= 9)
     return std::stoul(std::string(n)) == s.number;
-  return same_name(which, s.name);
+  return same_name(trimmed(which), trimmed(s.name));
 }
 
 std::string listed(const std::vector<connections::connection_setting>& all) {

@@ -32,6 +32,19 @@ TEST_F(ConnectionCli, EveryConnectionOrTheOneNamed) {
   }
 }
 
+// A name is matched as --set matches a parameter's (any case, `_` for a
+// blank), without the blanks a vendor pads it with: Hilscher's Connection1
+// is "Exclusive Owner " with a trailing blank.
+TEST_F(ConnectionCli, ANameIsMatchedWithoutItsPaddingAndWithUnderscoresForBlanks) {
+  const auto hilscher = corpus("Hilscher-North-America__EIP-FI-X90__EIS_V5_EXTENDED_CONFIG_DEMO.eds");
+  for (const std::string which : {"Exclusive Owner", "exclusive_owner", " EXCLUSIVE OWNER "}) {
+    const auto r = run_edsc({"connection", hilscher, which});
+    ASSERT_EQ(r.status, 0) << which << "\n" << r.output;
+    EXPECT_EQ(r.output.rfind("Connection1 \"Exclusive Owner \" (line 132)\n", 0), 0u) << which << "\n" << r.output;
+  }
+  EXPECT_EQ(run_edsc({"connection", hilscher, "Exclusive"}).status, 1);
+}
+
 TEST_F(ConnectionCli, AConnectionTheFileLacksIsLocatedAndListsTheOthers) {
   const auto r = run_edsc({"connection", opener(), "Owner"});
   EXPECT_EQ(r.status, 1);
