@@ -3,6 +3,7 @@
 // against the EDS), the refusal of a connection asked for alone that the
 // dialog cannot take, and the UNCONFIRMED warnings on a vendor's file.
 #include "cli_support.hpp"
+#include "corpus_dirs.hpp"
 
 namespace edsc::cli_test {
 namespace {
@@ -90,6 +91,30 @@ TEST_F(ConnectionLogixCli, WhatTheDialogIsOnlyReportedNotToTakeIsAWarning) {
             std::string::npos)
       << r.output;
   EXPECT_NE(r.output.find("Comm Format    Data - "), std::string::npos);
+}
+
+// Every corpus file: the logix rows exit as the text does, with a block per
+// connection, each either rows or the reason it is not possible, and no
+// refusal a corpus connection meets but the path's shape or the request.
+TEST_F(ConnectionLogixCli, EveryCorpusConnectionGetsRowsOrAReason) {
+  std::size_t files = 0, blocks = 0, possible = 0;
+  for (const auto& f : corpora::sample()) {
+    const auto text = run_edsc({"connection", f.string()});
+    const auto rows = run_edsc({"connection", f.string(), "--format", "logix"});
+    ASSERT_EQ(rows.status, text.status) << f << "\n" << rows.output;
+    if (rows.status != 0) continue;
+    ++files;
+    std::size_t here = 0, at = 0;
+    while ((at = rows.output.find("\nConnection", at + 1)) != std::string::npos) ++here;
+    std::size_t shown = 0;
+    for (at = 0; (at = text.output.find("Connection", at)) != std::string::npos; ++at)
+      if (at == 0 || text.output[at - 1] == '\n') ++shown;
+    EXPECT_EQ(here, shown) << f;
+    blocks += here;
+    for (at = 0; (at = rows.output.find("  Comm Format    ", at)) != std::string::npos; ++at) ++possible;
+  }
+  EXPECT_GT(files, 0u);
+  EXPECT_GT(possible, blocks / 2) << possible << " of " << blocks;
 }
 
 }  // namespace
