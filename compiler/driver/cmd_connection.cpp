@@ -190,6 +190,8 @@ void register_connection(CLI::App& app, command_action& run) {
   add_example(cmd, "edsc connection device.eds", "every connection's settings");
   add_example(cmd, "edsc connection device.eds 1 --format json", "Connection1 for a program to read");
   add_example(cmd, "edsc connection device.eds 1 --set Param3=100", "Connection1 with Param3 set to 100");
+  add_example(cmd, "edsc connection device.eds --format logix",
+              "what to type into Studio 5000's Generic Ethernet Module");
   cmd->callback([&run, cli] { run = [cli] { return run_connection(*cli); }; });
 }
 
