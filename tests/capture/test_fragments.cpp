@@ -45,6 +45,14 @@ TEST(CaptureFragments, OutOfOrderAreJoined) {
   EXPECT_EQ(r.datagrams[0].frame, 3U);
 }
 
+TEST(CaptureFragments, PaddingOfAShortFragmentIsNotPayload) {
+  bytes first = fragment(0, 16);  // 16 bytes of IP payload: Ethernet pads the frame to 60
+  first.resize(60, 0xee);
+  const auto r = frames("padded", {first, fragment(16, 2000)});
+  ASSERT_EQ(r.datagrams.size(), 1U);
+  EXPECT_EQ(r.datagrams[0].payload, payload);
+}
+
 TEST(CaptureFragments, InterleavedDatagramsAreKeptApart) {
   const auto r =
       frames("interleaved", {fragment(0, 512, 1), fragment(0, 512, 2), fragment(512, 2000, 2), fragment(512, 2000, 1)});
