@@ -1,0 +1,174 @@
+// tshark, a dissector nobody here wrote, as the judge of which frames carry
+// EtherNet/IP UDP and how long each datagram is: on a capture this test
+// writes (VLANs, fragments out of order, other traffic; pcap and pcapng) and
+// on one tcpdump takes of real loopback traffic.
+#include <arpa/inet.h>
+#include <gtest/gtest.h>
+#include <netinet/in.h>
+#include <pcap/dlt.h>
+#include <signal.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+
+#include <chrono>
+#include <cstdio>
+#include <sstream>
+#include <thread>
+
+#include "capture_writer.hpp"
+
+namespace edsc::capture::test {
+namespace {
+
+std::string run(const std::string& command) {
+  std::string out;
+  FILE* p = ::popen(command.c_str(), "r");
+  if (p == nullptr) return out;
+  char buf[4096];
+  while (const std::size_t n = std::fread(buf, 1, sizeof buf, p)) out.append(buf, n);
+  ::pclose(p);
+  return out;
+}
+
+bool have(const std::string& tool) { return std::system(("command -v " + tool + " >/dev/null 2>&1").c_str()) == 0; }
+
+// "frame srcport dstport udp-length" for each EtherNet/IP UDP datagram, as tshark sees them.
+std::string tshark_lines(const std::string& path) {
+  return run("tshark -r '" + path +
+             "' -T fields -e frame.number -e udp.srcport -e udp.dstport -e udp.length "
+             "-Y 'udp.port == 44818 || udp.port == 2222' 2>/dev/null");
+}
+
+std::string reader_lines(const std::string& path, std::string* error) {
+  const auto r = read_all(path);
+  *error = r.error;
+  std::ostringstream out;
+  for (const udp_datagram& d : r.datagrams) {
+    out << d.frame << '\t' << d.source.port << '\t' << d.destination.port << '\t' << d.payload.size() + 8 << '\n';
+  }
+  return out.str();
+}
+
+void write_mixed_capture(const std::string& path) {
+  capture_writer w(path, DLT_EN10MB);
+  const bytes big = udp(2222, 2222, pattern(2900, 1));
+  auto frag = [&](std::size_t from, std::size_t to) {
+    const bytes piece(big.begin() + static_cast<long>(from), big.begin() + static_cast<long>(std::min(to, big.size())));
+    return ethernet(
+        ipv4(piece, {.id = 99, .more_fragments = to < big.size(), .offset = static_cast<std::uint32_t>(from)}),
+        {0x8100});
+  };
+  std::int64_t t = 1;
+  w.write(ethernet(ipv4(udp(50000, 44818, pattern(24)))), t++);
+  w.write(ethernet(pattern(28), {}, 0x0806), t++);
+  w.write(frag(1000, 2000), t++);
+  w.write(ethernet(ipv4(udp(44818, 50000, pattern(80))), {0x88a8, 0x8100}), t++);
+  w.write(frag(0, 1000), t++);
+  w.write(frag(2000, 3000), t++);
+  w.write(ethernet(ipv4(udp(5353, 5353, pattern(30)))), t++);
+  w.write(ethernet(ipv4(udp(2222, 2222, pattern(12)), {.id = 5})), t++);
+}
+
+TEST(CaptureTshark, WrittenCaptureMatchesTshark) {
+  if (!have("tshark")) GTEST_SKIP() << "tshark is not installed (Debian package tshark)";
+  scratch_file file("judge.pcap");
+  write_mixed_capture(file.path());
+  std::string error;
+  const std::string ours = reader_lines(file.path(), &error);
+  EXPECT_EQ(error, "");
+  EXPECT_EQ(ours, "1\t50000\t44818\t32\n4\t44818\t50000\t88\n6\t2222\t2222\t2908\n8\t2222\t2222\t20\n");
+  EXPECT_EQ(ours, tshark_lines(file.path()));
+}
+
+TEST(CaptureTshark, PcapngMatchesTshark) {
+  if (!have("tshark") || !have("editcap")) GTEST_SKIP() << "tshark or editcap is not installed";
+  scratch_file file("judge2.pcap");
+  scratch_file ng("judge2.pcapng");
+  write_mixed_capture(file.path());
+  ASSERT_EQ(std::system(("editcap -F pcapng '" + file.path() + "' '" + ng.path() + "'").c_str()), 0);
+  std::string error;
+  const std::string ours = reader_lines(ng.path(), &error);
+  EXPECT_EQ(error, "");
+  EXPECT_EQ(ours, reader_lines(file.path(), &error));
+  EXPECT_EQ(ours, tshark_lines(ng.path()));
+}
+
+// tcpdump on the loopback (in immediate mode: otherwise libpcap holds the
+// packets in its ring up to a second, past the test's stop), taking only what this test sends: from
+// 127.0.0.77:2222 (bound here, so no other test's socket has it) to a port
+// nothing listens on.
+class loopback_tcpdump {
+ public:
+  explicit loopback_tcpdump(const std::string& path) {
+    int err[2];
+    if (::pipe(err) != 0) return;
+    pid_ = ::fork();
+    if (pid_ == 0) {
+      ::dup2(err[1], 2);
+      ::close(err[0]);
+      ::execlp("tcpdump", "tcpdump", "-i", "lo", "-n", "-U", "--immediate-mode", "-Z", "root", "-w", path.c_str(),
+               "udp and src host 127.0.0.77 and src port 2222", static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    ::close(err[1]);
+    // Ready once it says it listens.
+    std::string said;
+    char c;
+    while (said.find("listening on") == std::string::npos && ::read(err[0], &c, 1) == 1) said += c;
+    ::close(err[0]);
+    ready_ = said.find("listening on") != std::string::npos;
+  }
+  ~loopback_tcpdump() { stop(); }
+  loopback_tcpdump(const loopback_tcpdump&) = delete;
+  loopback_tcpdump& operator=(const loopback_tcpdump&) = delete;
+  [[nodiscard]] bool ready() const { return ready_; }
+  void stop() {
+    if (pid_ <= 0) return;
+    ::kill(pid_, SIGTERM);
+    ::waitpid(pid_, nullptr, 0);
+    pid_ = -1;
+  }
+
+ private:
+  pid_t pid_ = -1;
+  bool ready_ = false;
+};
+
+TEST(CaptureTshark, TcpdumpOfLoopbackMatchesTshark) {
+  if (::geteuid() != 0) GTEST_SKIP() << "tcpdump -i lo needs root";
+  if (!have("tcpdump") || !have("tshark")) GTEST_SKIP() << "tcpdump or tshark is not installed";
+  const int s = ::socket(AF_INET, SOCK_DGRAM, 0);
+  ASSERT_GE(s, 0);
+  sockaddr_in from{};
+  from.sin_family = AF_INET;
+  from.sin_port = htons(2222);
+  from.sin_addr.s_addr = htonl(0x7f00004d);  // 127.0.0.77
+  if (::bind(s, reinterpret_cast<sockaddr*>(&from), sizeof from) != 0) {
+    ::close(s);
+    GTEST_SKIP() << "127.0.0.77:2222 is taken";
+  }
+  scratch_file file("tcpdump.pcap");
+  loopback_tcpdump dump(file.path());
+  ASSERT_TRUE(dump.ready());
+  sockaddr_in to = from;
+  to.sin_port = htons(47339);  // nothing listens: the kernel answers port unreachable, also on lo
+  const std::size_t sizes[] = {0, 1, 20, 500, 1472, 9000, 60000};
+  for (std::size_t n : sizes) {
+    const bytes b = pattern(n, static_cast<std::uint8_t>(n));
+    ASSERT_EQ(::sendto(s, b.data(), b.size(), 0, reinterpret_cast<sockaddr*>(&to), sizeof to), static_cast<ssize_t>(n));
+  }
+  ::close(s);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  dump.stop();
+  std::string error;
+  const std::string ours = reader_lines(file.path(), &error);
+  EXPECT_EQ(error, "");
+  EXPECT_EQ(std::count(ours.begin(), ours.end(), '\n'), static_cast<long>(std::size(sizes)));
+  EXPECT_EQ(ours, tshark_lines(file.path()));
+  const auto r = read_all(file.path());
+  ASSERT_EQ(r.datagrams.size(), std::size(sizes));
+  EXPECT_EQ(r.datagrams[5].payload, pattern(9000, static_cast<std::uint8_t>(9000)));
+}
+
+}  // namespace
+}  // namespace edsc::capture::test
