@@ -131,6 +131,44 @@ TEST(cip_encap, send_unit_data_round_trip) {
   EXPECT_EQ(u->cip.size(), 8u);
 }
 
+// The connected data item must hold at least the 2-byte sequence count; the
+// error names the field and its offset in the message (base 24: after the
+// encapsulation header).
+TEST(cip_encap, send_unit_data_without_a_sequence_count_is_an_error_at_its_offset) {
+  // interface 0, timeout 0, 2 items; A1 00 04 00 + id; B1 00 01 00 + one byte
+  const auto short_data = unhex("00 00 00 00 00 00 02 00 A1 00 04 00 44 33 22 11 B1 00 01 00 07");
+  const auto u = decode_send_unit_data(short_data, 24);
+  ASSERT_FALSE(u.ok());
+  EXPECT_EQ(u.error().offset, 24u + 20u);  // the data item's first byte
+  EXPECT_NE(u.error().what.find("sequence count"), std::string::npos) << u.error().what;
+}
+
+// Without the connected address item the error points at the item count
+// (offset 6 in the command data: after the interface handle and timeout).
+TEST(cip_encap, send_unit_data_without_its_address_item_is_located_at_the_item_count) {
+  const auto no_address = unhex("00 00 00 00 00 00 01 00 B1 00 02 00 07 00");
+  const auto u = decode_send_unit_data(no_address, 24);
+  ASSERT_FALSE(u.ok());
+  EXPECT_EQ(u.error().offset, 24u + 6u);
+}
+
+// What edsc sends when it closes a connection: io.cpp leaves priority/tick
+// and timeout ticks at their defaults, normal priority with 2^10 ms ticks
+// (0x0A) and 14 ticks (0x0E), about 14 s for the unconnected request.
+TEST(cip_connection_manager, forward_close_defaults_to_normal_priority_and_14_ticks) {
+  forward_close_request fc;
+  fc.connection_serial = 0x0102;
+  fc.originator_vendor = 0x0304;
+  fc.originator_serial = 0x05060708;
+  fc.path = unhex("20 04 24 65");
+  EXPECT_EQ(hex(encode_forward_close(fc).value()),
+            "4E 02 20 06 24 01 "   // Forward_Close to class 6 instance 1
+            "0A 0E "               // priority/tick, timeout ticks
+            "02 01 04 03 "         // connection serial, originator vendor
+            "08 07 06 05 "         // originator serial
+            "02 00 20 04 24 65");  // path 2 words, reserved, assembly 0x65
+}
+
 TEST(cip_message, paths_pick_8_or_16_bit_segments) {
   EXPECT_EQ(hex(logical_path(0x04, 100, 4)), "20 04 24 64 30 04");
   EXPECT_EQ(hex(logical_path(0x04, 0x1234)), "20 04 25 00 34 12");
