@@ -12,6 +12,7 @@
 #include "cip/request.hpp"
 #include "connections/fields.hpp"
 #include "connections/plan.hpp"
+#include "connections/served_points.hpp"
 #include "model/device.hpp"
 #include "schema/cip_types.hpp"
 
@@ -32,29 +33,11 @@ struct assembly_instance {
   std::vector<input_field> fields;
 };
 
-// Any RPI from 0.1 ms to 10 s: what a field that sets no limit (empty, or a
-// fixed number, which is the default a tool proposes) leaves a scanner.
-inline constexpr std::uint32_t default_rpi_min_us = 100, default_rpi_max_us = 10'000'000;
-
-// The RPIs one direction of a ConnectionN accepts.
-struct rpi_limits {
-  std::uint32_t min_us = default_rpi_min_us, max_us = default_rpi_max_us;
-  std::uint32_t param = 0;  // N of the ParamN the RPI field names (its limits, as the Parameter object reports them)
-  bool unset = false;       // the field is empty: the EDS sets no limit
-};
-
-// One ConnectionN the simulator accepts Forward_Open for.
-struct connection_point {
-  std::uint32_t number = 0;  // N of ConnectionN
-  connections::connection_plan plan;
-  cip::bytes app_path;                                      // owns what `segments` views
-  std::vector<cip::path_segment> segments;                  // the application path, widths forgotten
-  model::app_type kind = model::app_type::exclusive_owner;  // as the plan classifies it
-  rpi_limits ot_rpi, to_rpi;
-  // The configuration assembly's member parameters: configuration data a
-  // Forward_Open carries is held to their type, limits and EnumN.
-  std::vector<connections::data_field> config_fields;
-};
+using connections::connection_point;
+using connections::default_rpi_max_us;
+using connections::default_rpi_min_us;
+using connections::rpi_limits;
+using connections::unserved;
 
 // One ParamN served as Parameter object (class 0x0F) instance N, its
 // attributes as the EDS gives them (parameter_object.cpp).
@@ -80,12 +63,6 @@ struct eds_file {
   std::string name;  // the file name without directories
   cip::bytes content;
   std::uint8_t major = 1, minor = 0;  // [File] Revision
-};
-
-// A ConnectionN the simulator does not serve, and why.
-struct unserved {
-  std::uint32_t number = 0;
-  std::string why;
 };
 
 struct device {

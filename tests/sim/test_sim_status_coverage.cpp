@@ -409,16 +409,21 @@ std::map<layer, std::vector<named_status>> codes_def() {
 }
 
 // Every source of the simulator, as one text.
+// compiler/sim, and the checks of what the EDS alone decides, which the
+// simulator refuses by (and the capture judge explains by).
 std::string simulator_sources() {
+  const fs::path compiler = fs::path(EDSC_PROJECT_DIR) / "compiler";
   std::string all;
-  for (const auto& e : fs::recursive_directory_iterator(fs::path(EDSC_PROJECT_DIR) / "compiler" / "sim"))
+  for (const auto& e : fs::recursive_directory_iterator(compiler / "sim"))
     if (e.is_regular_file()) all += read(e.path()) + "\n";
+  for (const char* shared : {"forward_open_fit.hpp", "forward_open_fit.cpp"})
+    all += read(compiler / "connections" / shared) + "\n";
   return all;
 }
 
 // Whether the simulator's sources name a status by its enumerator, through
 // the enum or the alias the simulator gives it (sim/objects.hpp: general,
-// sim/refusal.hpp: ext, sim/encap.cpp: status).
+// connections/forward_open_fit.hpp: ext, sim/encap.cpp: status).
 bool named_by_simulator(const std::string& sources, layer kind, const std::string& symbol) {
   const std::vector<std::string> scopes = kind == layer::encap ? std::vector<std::string>{"encap_status", "status"}
                                           : kind == layer::general
