@@ -22,14 +22,15 @@ read_all_result one_frame(const std::string& name, int link, const bytes& frame)
 
 void expect_the_datagram(const read_all_result& r) {
   ASSERT_EQ(r.error, "");
-  ASSERT_EQ(r.datagrams.size(), 1U);
-  const udp_datagram& d = r.datagrams[0];
+  ASSERT_EQ(r.messages.size(), 1U);
+  const message& d = r.messages[0];
   EXPECT_EQ(d.frame, 1U);
   EXPECT_EQ(d.time.sec, 5);
   EXPECT_EQ(d.time.nsec, 250U);
   EXPECT_EQ(d.source, (endpoint{0xc0a80001, 50000}));
   EXPECT_EQ(d.destination, (endpoint{0xc0a80002, 44818}));
   EXPECT_EQ(d.payload, payload);
+  EXPECT_EQ(d.via, transport::udp);
 }
 
 const bytes packet = ipv4(udp(50000, 44818, payload));
@@ -50,7 +51,7 @@ TEST(CaptureLink, QinQTagsAreSkipped) {
 
 TEST(CaptureLink, TooManyVlanTagsAreNamed) {
   const auto r = one_frame("deep", DLT_EN10MB, ethernet(packet, {0x8100, 0x8100, 0x8100, 0x8100, 0x8100}));
-  EXPECT_TRUE(r.datagrams.empty());
+  EXPECT_TRUE(r.messages.empty());
   EXPECT_EQ(r.drops[drop::vlan_tags_too_deep], 1U);
 }
 
@@ -68,14 +69,14 @@ TEST(CaptureLink, RawIpv6IsOtherTraffic) {
   bytes v6 = packet;
   v6[0] = 0x60;
   const auto r = one_frame("raw6", DLT_RAW, v6);
-  EXPECT_TRUE(r.datagrams.empty());
+  EXPECT_TRUE(r.messages.empty());
   EXPECT_EQ(r.drops[drop::not_ipv4], 1U);
   EXPECT_EQ(r.drops.malformed_total(), 0U);
 }
 
 TEST(CaptureLink, UnsupportedLinkTypeIsNamed) {
   const auto r = one_frame("ppp", DLT_PPP, packet);
-  EXPECT_TRUE(r.datagrams.empty());
+  EXPECT_TRUE(r.messages.empty());
   EXPECT_EQ(r.drops[drop::link_type_unsupported], 1U);
 }
 
@@ -91,11 +92,11 @@ TEST(CaptureLink, OtherTrafficIsCountedAndFramesStillNumbered) {
   }
   const auto r = read_all(file.path());
   ASSERT_EQ(r.error, "");
-  ASSERT_EQ(r.datagrams.size(), 2U);
-  EXPECT_EQ(r.datagrams[0].frame, 4U);
-  EXPECT_EQ(r.datagrams[0].destination.port, 2222);
-  EXPECT_EQ(r.datagrams[1].frame, 5U);
-  EXPECT_EQ(r.datagrams[1].source.port, 44818);
+  ASSERT_EQ(r.messages.size(), 2U);
+  EXPECT_EQ(r.messages[0].frame, 4U);
+  EXPECT_EQ(r.messages[0].destination.port, 2222);
+  EXPECT_EQ(r.messages[1].frame, 5U);
+  EXPECT_EQ(r.messages[1].source.port, 44818);
   EXPECT_EQ(r.frames, 5U);
   EXPECT_EQ(r.drops[drop::not_ipv4], 1U);
   EXPECT_EQ(r.drops[drop::udp_port_other], 1U);

@@ -43,7 +43,7 @@ std::string reader_lines(const std::string& path, std::string* error) {
   const auto r = read_all(path);
   *error = r.error;
   std::ostringstream out;
-  for (const udp_datagram& d : r.datagrams) {
+  for (const message& d : r.messages) {
     out << d.frame << '\t' << d.source.port << '\t' << d.destination.port << '\t' << d.payload.size() + 8 << '\n';
   }
   return out.str();
@@ -166,8 +166,8 @@ TEST(CaptureTshark, TcpdumpOfLoopbackMatchesTshark) {
   EXPECT_EQ(std::count(ours.begin(), ours.end(), '\n'), static_cast<long>(std::size(sizes)));
   EXPECT_EQ(ours, tshark_lines(file.path()));
   const auto r = read_all(file.path());
-  ASSERT_EQ(r.datagrams.size(), std::size(sizes));
-  EXPECT_EQ(r.datagrams[5].payload, pattern(9000, static_cast<std::uint8_t>(9000)));
+  ASSERT_EQ(r.messages.size(), std::size(sizes));
+  EXPECT_EQ(r.messages[5].payload, pattern(9000, static_cast<std::uint8_t>(9000)));
 }
 
 }  // namespace
