@@ -86,9 +86,10 @@ TEST(CaptureLink, OtherTrafficIsCountedAndFramesStillNumbered) {
     capture_writer w(file.path(), DLT_EN10MB);
     w.write(ethernet(pattern(28), {}, 0x0806));             // ARP
     w.write(ethernet(ipv4(udp(5353, 53, payload))));        // DNS
-    w.write(ethernet(ipv4(pattern(20), {.protocol = 6})));  // TCP
+    w.write(ethernet(ipv4(pattern(20), {.protocol = 1})));  // ICMP
     w.write(ethernet(ipv4(udp(2222, 2222, payload))));      // class 1 I/O
     w.write(ethernet(ipv4(udp(44818, 60000, payload))));    // a reply
+    w.write(ethernet(ipv4(pattern(20), {.protocol = 6})));  // TCP, ports 0x0001 and 0x0203
   }
   const auto r = read_all(file.path());
   ASSERT_EQ(r.error, "");
@@ -97,10 +98,11 @@ TEST(CaptureLink, OtherTrafficIsCountedAndFramesStillNumbered) {
   EXPECT_EQ(r.messages[0].destination.port, 2222);
   EXPECT_EQ(r.messages[1].frame, 5U);
   EXPECT_EQ(r.messages[1].source.port, 44818);
-  EXPECT_EQ(r.frames, 5U);
+  EXPECT_EQ(r.frames, 6U);
   EXPECT_EQ(r.drops[drop::not_ipv4], 1U);
   EXPECT_EQ(r.drops[drop::udp_port_other], 1U);
   EXPECT_EQ(r.drops[drop::ip_protocol_other], 1U);
+  EXPECT_EQ(r.drops[drop::tcp_port_other], 1U);
   EXPECT_EQ(r.drops.malformed_total(), 0U);
 }
 

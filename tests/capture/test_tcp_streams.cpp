@@ -98,12 +98,14 @@ TEST(CaptureTcp, CaptureStartingAtAMessageSkipsNothing) {
 }
 
 TEST(CaptureTcp, LostSegmentIsCountedAndLaterMessagesRead) {
-  // The middle of `request` never comes; `reply` follows 20 s later, past the gap timeout.
+  // The middle of `request` does not come before a segment 26 s later, past
+  // the gap timeout: the gap is given up, and what fills it at last is old.
   const auto r = read_timed_frames("lost", {{client.syn(), 1},
                                             {client.at(0, register_session), 2},
                                             {client.at(28, slice(request, 0, 30)), 3},
                                             {client.at(112, reply), 4},
-                                            {client.at(180, register_session), 30}});
+                                            {client.at(180, register_session), 30},
+                                            {client.at(58, slice(request, 30, 84)), 31}});
   ASSERT_EQ(r.messages.size(), 3U);
   EXPECT_EQ(r.messages[0].payload, register_session);
   EXPECT_EQ(r.messages[1].payload, reply);
