@@ -14,11 +14,15 @@ constexpr auto code(cip::command c) { return static_cast<std::uint16_t>(c); }
 
 // The commands a TCP stream carries (NOP left out: two zero bytes are too common).
 constexpr std::array<std::uint16_t, 9> known_commands{
-    code(cip::command::list_services),      code(cip::command::list_identity),
-    code(cip::command::list_interfaces),    code(cip::command::register_session),
-    code(cip::command::unregister_session), code(cip::command::send_rr_data),
-    code(cip::command::send_unit_data),     0x0072,  // IndicateStatus
-    0x0073,                                          // Cancel
+    code(cip::command::list_services),
+    code(cip::command::list_identity),
+    code(cip::command::list_interfaces),
+    code(cip::command::register_session),
+    code(cip::command::unregister_session),
+    code(cip::command::send_rr_data),
+    code(cip::command::send_unit_data),
+    0x0072,  // IndicateStatus
+    0x0073,  // Cancel
 };
 
 }  // namespace

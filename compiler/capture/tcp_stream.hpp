@@ -23,8 +23,8 @@ struct tcp_limits {
   std::size_t max_held_per_stream = 64 * 1024;  // bytes held ahead of a gap, in one direction
   std::size_t max_held_total = 8 * 1024 * 1024;
   std::size_t max_message_data = cip::max_encap_data;  // the framer's bound on one message
-  std::int64_t gap_timeout_ns = 10'000'000'000;         // a gap unfilled this long is skipped
-  std::int64_t idle_timeout_ns = 300'000'000'000;       // a direction silent this long is ended
+  std::int64_t gap_timeout_ns = 10'000'000'000;        // a gap unfilled this long is skipped
+  std::int64_t idle_timeout_ns = 300'000'000'000;      // a direction silent this long is ended
 };
 
 // The frame a message is credited to, and its time.
@@ -85,8 +85,8 @@ class tcp_stream {
   std::size_t held_bytes_ = 0;
   std::int64_t gap_since_ns_ = 0;
   std::int64_t last_seen_ns_ = 0;
-  bool synced_ = false;                // the framer starts at a message boundary
-  std::vector<std::uint8_t> scan_;     // bytes searched for a header, fewer than 24 between segments
+  bool synced_ = false;             // the framer starts at a message boundary
+  std::vector<std::uint8_t> scan_;  // bytes searched for a header, fewer than 24 between segments
   cip::stream_framer framer_;
 };
 

@@ -89,6 +89,7 @@ struct tcp_fields {
   bool syn = false;
   bool fin = false;
   bool rst = false;
+  bool ack = true;
   std::uint8_t data_offset = 5;  // in 32-bit words; options past 20 bytes are zeros
 };
 
@@ -101,7 +102,7 @@ inline bytes tcp(std::uint16_t sport, std::uint16_t dport, const bytes& payload,
   put16(b, 0);  // acknowledgement number: the reader does not follow it
   put16(b, 0);
   b.push_back(static_cast<std::uint8_t>(f.data_offset << 4));
-  b.push_back(static_cast<std::uint8_t>(0x10 | (f.fin ? 1 : 0) | (f.syn ? 2 : 0) | (f.rst ? 4 : 0)));  // ACK set
+  b.push_back(static_cast<std::uint8_t>((f.ack ? 0x10 : 0) | (f.fin ? 1 : 0) | (f.syn ? 2 : 0) | (f.rst ? 4 : 0)));
   put16(b, 65535);  // window
   put16(b, 0);      // checksum, not checked
   put16(b, 0);      // urgent pointer

@@ -29,7 +29,8 @@ struct tcp_side {
     f.seq = isn + 1 + offset;
     return frame(data, f);
   }
-  [[nodiscard]] bytes syn() const { return frame({}, {.seq = isn, .syn = true}); }
+  // The client's SYN acknowledges nothing; the server's answers it.
+  [[nodiscard]] bytes syn() const { return frame({}, {.seq = isn, .syn = true, .ack = to_client}); }
   [[nodiscard]] bytes fin(std::uint32_t offset) const { return at(offset, {}, {.fin = true}); }
   [[nodiscard]] bytes rst(std::uint32_t offset) const { return at(offset, {}, {.rst = true}); }
   [[nodiscard]] bytes frame(const bytes& data, tcp_fields f) const {
@@ -57,7 +58,7 @@ struct timed_frame {
 
 // The frames written at seconds 1, 2, 3, ... (or their own times), read back.
 inline read_all_result read_timed_frames(const std::string& name, const std::vector<timed_frame>& fs,
-                                          tcp_limits limits = {}) {
+                                         tcp_limits limits = {}) {
   scratch_file file(name);
   {
     capture_writer w(file.path(), DLT_EN10MB);

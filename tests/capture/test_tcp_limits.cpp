@@ -49,8 +49,9 @@ TEST(CaptureTcpLimits, HeldBytesPerStreamAreCapped) {
   limits.max_held_per_stream = 200;
   // 84 bytes lost, then three requests ahead of the gap: the third goes past
   // 200 held bytes, and the gap is given up; the lost bytes coming at last are old.
-  const auto r = read_frames("tcpheld", {client.syn(), client.at(84, request), client.at(168, request),
-                                         client.at(252, request), client.at(336, request), client.at(0, request)},
+  const auto r = read_frames("tcpheld",
+                             {client.syn(), client.at(84, request), client.at(168, request), client.at(252, request),
+                              client.at(336, request), client.at(0, request)},
                              limits);
   EXPECT_EQ(r.drops[drop::tcp_gap], 1U);
   ASSERT_EQ(r.messages.size(), 4U);
@@ -63,9 +64,9 @@ TEST(CaptureTcpLimits, HeldBytesOfAllStreamsAreCapped) {
   tcp_limits limits;
   limits.max_held_total = 200;
   const tcp_side other{.client_port = 50001};
-  const auto r = read_frames("tcpheldall", {client.syn(), other.syn(), client.at(84, request), client.at(168, request),
-                                            other.at(84, request)},
-                             limits);
+  const auto r = read_frames(
+      "tcpheldall", {client.syn(), other.syn(), client.at(84, request), client.at(168, request), other.at(84, request)},
+      limits);
   EXPECT_EQ(r.drops[drop::tcp_held_full], 1U);
   EXPECT_EQ(r.drops[drop::tcp_gap], 1U);  // the first stream's, skipped at the end
   EXPECT_EQ(r.messages.size(), 3U);
@@ -138,7 +139,8 @@ TEST(CaptureTcpLimits, MessageLongerThanTheBoundIsNamedAndTheStreamResynchronise
   tcp_limits limits;
   limits.max_message_data = 1000;
   const bytes huge = slice(encap(0x0070, 0xFFFF), 0, 24);
-  const auto r = read_frames("tcptoolong", {client.syn(), client.at(0, join({huge, pattern(2000, 5), request}))}, limits);
+  const auto r =
+      read_frames("tcptoolong", {client.syn(), client.at(0, join({huge, pattern(2000, 5), request}))}, limits);
   EXPECT_EQ(r.drops[drop::tcp_message_too_long], 1U);
   ASSERT_EQ(r.messages.size(), 1U);
   EXPECT_EQ(r.messages[0].payload, request);

@@ -39,9 +39,9 @@ TEST(CaptureTcp, ThreeMessagesInOneSegmentAreThree) {
 
 TEST(CaptureTcp, BothDirectionsAreKeptApart) {
   const tcp_side server{.isn = 7000, .to_client = true};
-  const auto r = read_frames("both", {client.syn(), server.syn(), client.at(0, slice(request, 0, 30)),
-                                      server.at(0, slice(reply, 0, 50)), client.at(30, slice(request, 30, 84)),
-                                      server.at(50, slice(reply, 50, 68))});
+  const auto r = read_frames(
+      "both", {client.syn(), server.syn(), client.at(0, slice(request, 0, 30)), server.at(0, slice(reply, 0, 50)),
+               client.at(30, slice(request, 30, 84)), server.at(50, slice(reply, 50, 68))});
   ASSERT_EQ(r.messages.size(), 2U);
   EXPECT_EQ(r.messages[0].payload, request);
   EXPECT_EQ(r.messages[1].payload, reply);
@@ -51,11 +51,11 @@ TEST(CaptureTcp, BothDirectionsAreKeptApart) {
 
 TEST(CaptureTcp, RetransmittedBytesAreDeliveredOnce) {
   const bytes stream = join({register_session, request});
-  const auto r = read_frames("retrans", {client.syn(), client.at(0, slice(stream, 0, 50)),
-                                         client.at(0, slice(stream, 0, 50)),     // whole again
-                                         client.at(20, slice(stream, 20, 80)),   // half again, half new
-                                         client.at(50, slice(stream, 50, 80)),   // within what came
-                                         client.at(80, slice(stream, 80, 112))});
+  const auto r = read_frames(
+      "retrans", {client.syn(), client.at(0, slice(stream, 0, 50)), client.at(0, slice(stream, 0, 50)),  // whole again
+                  client.at(20, slice(stream, 20, 80)),  // half again, half new
+                  client.at(50, slice(stream, 50, 80)),  // within what came
+                  client.at(80, slice(stream, 80, 112))});
   ASSERT_EQ(r.messages.size(), 2U);
   EXPECT_EQ(r.messages[0].payload, register_session);
   EXPECT_EQ(r.messages[0].frame, 2U);
@@ -81,8 +81,8 @@ TEST(CaptureTcp, CaptureStartingMidMessageResynchronises) {
   // No SYN: the first segment holds the last 50 bytes of an earlier message, then a whole one.
   const bytes earlier = encap(0x0070, 70, 9);
   const bytes first = join({slice(earlier, earlier.size() - 50, earlier.size()), slice(request, 0, 20)});
-  const auto r = read_frames("midstream", {client.at(5000, first), client.at(5070, slice(request, 20, 84)),
-                                           client.at(5134, reply)});
+  const auto r = read_frames("midstream",
+                             {client.at(5000, first), client.at(5070, slice(request, 20, 84)), client.at(5134, reply)});
   ASSERT_EQ(r.messages.size(), 2U);
   EXPECT_EQ(r.messages[0].payload, request);
   EXPECT_EQ(r.messages[0].frame, 2U);
@@ -146,7 +146,8 @@ TEST(CaptureTcp, FinEndsTheDirectionAndAnUnfinishedMessageIsCounted) {
 
 TEST(CaptureTcp, SynOnTheSameAddressesStartsAnotherStream) {
   const tcp_side again{.isn = 90000};
-  const auto r = read_frames("reuse", {client.syn(), client.at(0, slice(request, 0, 30)), again.syn(), again.at(0, reply)});
+  const auto r =
+      read_frames("reuse", {client.syn(), client.at(0, slice(request, 0, 30)), again.syn(), again.at(0, reply)});
   ASSERT_EQ(r.messages.size(), 1U);
   EXPECT_EQ(r.messages[0].payload, reply);
   EXPECT_EQ(r.drops[drop::tcp_message_incomplete], 1U);
@@ -154,9 +155,9 @@ TEST(CaptureTcp, SynOnTheSameAddressesStartsAnotherStream) {
 
 TEST(CaptureTcp, RstEndsBothDirections) {
   const tcp_side server{.isn = 7000, .to_client = true};
-  const auto r = read_frames("rst", {client.syn(), server.syn(), client.at(0, slice(request, 0, 30)),
-                                     server.at(0, slice(reply, 0, 10)),
-                                     server.rst(10), client.at(30, slice(request, 30, 84))});
+  const auto r =
+      read_frames("rst", {client.syn(), server.syn(), client.at(0, slice(request, 0, 30)),
+                          server.at(0, slice(reply, 0, 10)), server.rst(10), client.at(30, slice(request, 30, 84))});
   EXPECT_TRUE(r.messages.empty());  // the rest of `request` came after the RST: a stream seen mid-way
   EXPECT_EQ(r.drops[drop::tcp_message_incomplete], 2U);
   EXPECT_EQ(r.drops[drop::tcp_resync_bytes], 54U);
