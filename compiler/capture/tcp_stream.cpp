@@ -25,6 +25,10 @@ constexpr std::array<std::uint16_t, 9> known_commands{
     0x0073,  // Cancel
 };
 
+// What one held segment costs beyond its bytes (its map node, its vector),
+// counted against the caps so that a flood of one-byte segments is bounded too.
+constexpr std::size_t piece_overhead = 64;
+
 }  // namespace
 
 bool plausible_encap_header(std::span<const std::uint8_t> b) {
@@ -68,8 +72,11 @@ void tcp_stream::add(const tcp_segment& s, frame_ref at, drop_counts& counts, st
 void tcp_stream::hold(std::int64_t offset, std::span<const std::uint8_t> data, frame_ref at) {
   if (held_.empty()) gap_since_ns_ = last_seen_ns_;
   auto [it, inserted] = held_.try_emplace(offset);
-  // A retransmission of a held segment keeps the longer of the two.
-  if (!inserted && it->second.data.size() >= data.size()) return;
+  if (inserted) {
+    held_bytes_ += piece_overhead;
+  } else if (it->second.data.size() >= data.size()) {
+    return;  // a retransmission of a held segment: the longer of the two is kept
+  }
   held_bytes_ = held_bytes_ - it->second.data.size() + data.size();
   it->second = piece{{data.begin(), data.end()}, at};
 }
@@ -95,7 +102,7 @@ void tcp_stream::drain(const std::optional<frame_ref>& filled_by, drop_counts& c
   while (!held_.empty() && held_.begin()->first <= next_) {
     auto node = held_.extract(held_.begin());
     piece& p = node.mapped();
-    held_bytes_ -= p.data.size();
+    held_bytes_ -= p.data.size() + piece_overhead;
     const std::int64_t end = node.key() + static_cast<std::int64_t>(p.data.size());
     if (end <= next_) continue;
     const auto from = static_cast<std::size_t>(next_ - node.key());
@@ -134,12 +141,13 @@ std::vector<std::uint8_t> tcp_stream::resync(std::span<const std::uint8_t> data,
     counts.add(drop::tcp_resync_bytes, i);
     synced_ = true;
     std::vector<std::uint8_t> rest(all.begin() + static_cast<std::ptrdiff_t>(i), all.end());
-    scan_.clear();
+    scan_ = std::vector<std::uint8_t>();
     return rest;
   }
+  // A fresh vector, not an erase: what the scan held is freed, not kept as capacity.
   const std::size_t keep = std::min(scan_.size(), cip::encap_header_size - 1);
   counts.add(drop::tcp_resync_bytes, scan_.size() - keep);
-  scan_.erase(scan_.begin(), scan_.end() - static_cast<std::ptrdiff_t>(keep));
+  scan_ = std::vector<std::uint8_t>(scan_.end() - static_cast<std::ptrdiff_t>(keep), scan_.end());
   return {};
 }
 
@@ -161,7 +169,7 @@ std::span<const std::uint8_t> tcp_stream::frame_some(std::span<const std::uint8_
 
 void tcp_stream::lose_sync() {
   synced_ = false;
-  scan_.clear();
+  scan_ = std::vector<std::uint8_t>();
   framer_ = cip::stream_framer(limits_.max_message_data);
 }
 

@@ -20,7 +20,7 @@ namespace edsc::capture {
 
 struct tcp_limits {
   std::size_t max_streams = 1024;               // directions open at once
-  std::size_t max_held_per_stream = 64 * 1024;  // bytes held ahead of a gap, in one direction
+  std::size_t max_held_per_stream = 64 * 1024;  // bytes held ahead of a gap in one direction, 64 more a segment
   std::size_t max_held_total = 8 * 1024 * 1024;
   std::size_t max_message_data = cip::max_encap_data;  // the framer's bound on one message
   std::int64_t gap_timeout_ns = 10'000'000'000;        // a gap unfilled this long is skipped
@@ -57,6 +57,7 @@ class tcp_stream {
     return !held_.empty() && now_ns - gap_since_ns_ > timeout_ns;
   }
   [[nodiscard]] std::int64_t last_seen_ns() const { return last_seen_ns_; }
+  // Bytes held beyond gaps, each segment counted 64 bytes more for its bookkeeping.
   [[nodiscard]] std::size_t held_bytes() const { return held_bytes_; }
   // Every byte this direction keeps: held, being scanned, in the framer.
   [[nodiscard]] std::size_t pending_bytes() const { return held_bytes_ + scan_.size() + framer_.pending(); }

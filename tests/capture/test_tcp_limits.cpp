@@ -46,9 +46,10 @@ TEST(CaptureTcpLimits, OtherPortsAreOtherTraffic) {
 
 TEST(CaptureTcpLimits, HeldBytesPerStreamAreCapped) {
   tcp_limits limits;
-  limits.max_held_per_stream = 200;
+  limits.max_held_per_stream = 400;
   // 84 bytes lost, then three requests ahead of the gap: the third goes past
-  // 200 held bytes, and the gap is given up; the lost bytes coming at last are old.
+  // 400 held bytes (84 and 64 for bookkeeping each), and the gap is given up;
+  // the lost bytes coming at last are old.
   const auto r = read_frames("tcpheld",
                              {client.syn(), client.at(84, request), client.at(168, request), client.at(252, request),
                               client.at(336, request), client.at(0, request)},
@@ -62,7 +63,7 @@ TEST(CaptureTcpLimits, HeldBytesPerStreamAreCapped) {
 
 TEST(CaptureTcpLimits, HeldBytesOfAllStreamsAreCapped) {
   tcp_limits limits;
-  limits.max_held_total = 200;
+  limits.max_held_total = 400;  // two requests held by one stream, not three by two
   const tcp_side other{.client_port = 50001};
   const auto r = read_frames(
       "tcpheldall", {client.syn(), other.syn(), client.at(84, request), client.at(168, request), other.at(84, request)},
@@ -125,6 +126,33 @@ TEST(CaptureTcpLimits, StreamWithoutAHeaderHoldsLessThanOne) {
   EXPECT_LT(most, 24U);
   streams.finish(counts, out);
   EXPECT_EQ(counts[drop::tcp_resync_bytes], 100'000U);
+}
+
+// One-byte segments ahead of a gap, each with a hole before it: what each
+// costs to hold is counted, so the cap bounds the segments held, not only the bytes.
+TEST(CaptureTcpLimits, TinySegmentsCountTheirBookkeeping) {
+  tcp_limits limits;
+  limits.max_held_per_stream = 64 * 1024;
+  tcp_streams streams(limits);
+  drop_counts counts;
+  std::vector<message> out;
+  tcp_segment s;
+  s.source = client.source();
+  s.destination = client.destination();
+  s.syn = true;
+  streams.add(s, {1, {1, 0}}, counts, out);
+  s.syn = false;
+  const bytes one{0x41};
+  s.payload = one;
+  std::size_t most = 0;
+  for (std::uint32_t i = 0; i < 20'000; ++i) {
+    s.seq = 100 + 2 * i;
+    streams.add(s, {i + 2, {1, 0}}, counts, out);
+    most = std::max(most, streams.held_bytes());
+  }
+  EXPECT_LE(most, limits.max_held_per_stream);
+  // 64 KiB holds about a thousand such segments: every later one gives up a gap.
+  EXPECT_GT(counts[drop::tcp_gap], 18'000U);
 }
 
 TEST(CaptureTcpLimits, MessageThatNeverComesIsCountedAtTheEnd) {
