@@ -8,6 +8,8 @@ std::string_view drop_name(drop d) {
     case drop::not_ipv4: return "not_ipv4";
     case drop::ip_protocol_other: return "ip_protocol_other";
     case drop::udp_port_other: return "udp_port_other";
+    case drop::tcp_port_other: return "tcp_port_other";
+    case drop::tcp_resync_bytes: return "tcp_resync_bytes";
     case drop::truncated_by_snaplen: return "truncated_by_snaplen";
     case drop::link_header_short: return "link_header_short";
     case drop::vlan_tags_too_deep: return "vlan_tags_too_deep";
@@ -23,6 +25,13 @@ std::string_view drop_name(drop d) {
     case drop::fragment_incomplete: return "fragment_incomplete";
     case drop::udp_header_short: return "udp_header_short";
     case drop::udp_length_lies: return "udp_length_lies";
+    case drop::tcp_header_short: return "tcp_header_short";
+    case drop::tcp_bad_data_offset: return "tcp_bad_data_offset";
+    case drop::tcp_gap: return "tcp_gap";
+    case drop::tcp_held_full: return "tcp_held_full";
+    case drop::tcp_streams_full: return "tcp_streams_full";
+    case drop::tcp_message_too_long: return "tcp_message_too_long";
+    case drop::tcp_message_incomplete: return "tcp_message_incomplete";
   }
   return "unknown";
 }

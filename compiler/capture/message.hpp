@@ -1,6 +1,7 @@
 #pragma once
-// What the reader yields, for both transports: one EtherNet/IP message with
-// the frame that completed it and its addresses.
+// What the capture reader yields: one EtherNet/IP message, over UDP (a
+// datagram's payload) or over TCP (one whole encapsulation message cut from
+// the reassembled stream), with where and when it was seen.
 #include <cstdint>
 #include <vector>
 
@@ -12,17 +13,21 @@ struct endpoint {
   std::uint32_t address = 0;  // host order
   std::uint16_t port = 0;
   friend bool operator==(const endpoint&, const endpoint&) = default;
-  friend auto operator<=>(const endpoint&, const endpoint&) = default;
 };
 
 enum class transport : std::uint8_t { udp, tcp };
 
 struct message {
-  std::uint64_t frame = 0;  // the frame that completed it, as Wireshark numbers frames
-  timestamp time;           // that frame's time
-  endpoint source, destination;
+  // The frame that completed it, as Wireshark numbers frames and shows a
+  // reassembled datagram or PDU: for TCP, the frame whose segment made the
+  // message whole (the last byte's, or the one that filled a gap before it).
+  std::uint64_t frame = 0;
+  timestamp time;  // that frame's time
+  endpoint source;
+  endpoint destination;
   transport via = transport::udp;
-  std::vector<std::uint8_t> payload;  // UDP: the datagram's payload; TCP: one whole encapsulation message
+  // UDP: the datagram's payload; TCP: the 24-byte encapsulation header and its data.
+  std::vector<std::uint8_t> payload;
 };
 
 }  // namespace edsc::capture

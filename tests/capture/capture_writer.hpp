@@ -84,6 +84,46 @@ inline bytes udp(std::uint16_t sport, std::uint16_t dport, const bytes& payload)
   return b;
 }
 
+struct tcp_fields {
+  std::uint32_t seq = 0;
+  bool syn = false;
+  bool fin = false;
+  bool rst = false;
+  bool ack = true;
+  std::uint8_t data_offset = 5;  // in 32-bit words; options past 20 bytes are zeros
+};
+
+inline bytes tcp(std::uint16_t sport, std::uint16_t dport, const bytes& payload, tcp_fields f = {}) {
+  bytes b;
+  put16(b, sport);
+  put16(b, dport);
+  put16(b, static_cast<std::uint16_t>(f.seq >> 16));
+  put16(b, static_cast<std::uint16_t>(f.seq));
+  put16(b, 0);  // acknowledgement number: the reader does not follow it
+  put16(b, 0);
+  b.push_back(static_cast<std::uint8_t>(f.data_offset << 4));
+  b.push_back(static_cast<std::uint8_t>((f.ack ? 0x10 : 0) | (f.fin ? 1 : 0) | (f.syn ? 2 : 0) | (f.rst ? 4 : 0)));
+  put16(b, 65535);  // window
+  put16(b, 0);      // checksum, not checked
+  put16(b, 0);      // urgent pointer
+  b.resize(b.size() + (f.data_offset > 5 ? (f.data_offset - 5) * 4U : 0U), 0);
+  b.insert(b.end(), payload.begin(), payload.end());
+  return b;
+}
+
+// An encapsulation message: the 24-byte header (command, length, session,
+// status 0, a sender context, options 0) and `data_length` bytes of pattern.
+inline bytes encap(std::uint16_t command, std::size_t data_length, std::uint8_t seed = 0) {
+  bytes b{static_cast<std::uint8_t>(command), static_cast<std::uint8_t>(command >> 8),
+          static_cast<std::uint8_t>(data_length), static_cast<std::uint8_t>(data_length >> 8)};
+  b.insert(b.end(), {0x11, 0x22, 0x33, 0x44, 0, 0, 0, 0});
+  for (int i = 0; i < 8; ++i) b.push_back(static_cast<std::uint8_t>(seed + i));
+  b.insert(b.end(), {0, 0, 0, 0});
+  const bytes data = pattern(data_length, seed);
+  b.insert(b.end(), data.begin(), data.end());
+  return b;
+}
+
 struct ip_fields {
   std::uint16_t id = 1;
   bool more_fragments = false;
@@ -137,17 +177,17 @@ inline bytes sll2(const bytes& payload, std::uint16_t protocol = 0x0800) {
   return b;
 }
 
-// Every EtherNet/IP datagram of a file, and the reader (for its counts).
+// Every EtherNet/IP message of a file, and the reader's counts.
 struct read_all_result {
-  std::vector<udp_datagram> datagrams;
+  std::vector<message> messages;
   drop_counts drops;
   std::uint64_t frames = 0;
   std::string error;
 };
 
-inline read_all_result read_all(const std::string& path, reassembly_limits limits = {}) {
+inline read_all_result read_all(const std::string& path, reassembly_limits limits = {}, tcp_limits tcp = {}) {
   read_all_result out;
-  auto r = reader::open(path, limits);
+  auto r = reader::open(path, limits, tcp);
   if (!r) {
     out.error = r.error().message;
     return out;
@@ -159,7 +199,7 @@ inline read_all_result read_all(const std::string& path, reassembly_limits limit
       break;
     }
     if (!d->has_value()) break;
-    out.datagrams.push_back(std::move(**d));
+    out.messages.push_back(std::move(**d));
   }
   out.drops = r->drops();
   out.frames = r->frames();

@@ -31,52 +31,52 @@ read_all_result frames(const std::string& name, const std::vector<bytes>& fs, re
 
 TEST(CaptureFragments, InOrderAreJoined) {
   const auto r = frames("inorder", {fragment(0, 400), fragment(400, 800), fragment(800, 2000)});
-  ASSERT_EQ(r.datagrams.size(), 1U);
-  EXPECT_EQ(r.datagrams[0].payload, payload);
-  EXPECT_EQ(r.datagrams[0].frame, 3U);  // where Wireshark shows the reassembled datagram
-  EXPECT_EQ(r.datagrams[0].time.sec, 3);
+  ASSERT_EQ(r.messages.size(), 1U);
+  EXPECT_EQ(r.messages[0].payload, payload);
+  EXPECT_EQ(r.messages[0].frame, 3U);  // where Wireshark shows the reassembled datagram
+  EXPECT_EQ(r.messages[0].time.sec, 3);
   EXPECT_EQ(r.drops.malformed_total(), 0U);
 }
 
 TEST(CaptureFragments, OutOfOrderAreJoined) {
   const auto r = frames("outoforder", {fragment(800, 2000), fragment(0, 400), fragment(400, 800)});
-  ASSERT_EQ(r.datagrams.size(), 1U);
-  EXPECT_EQ(r.datagrams[0].payload, payload);
-  EXPECT_EQ(r.datagrams[0].frame, 3U);
+  ASSERT_EQ(r.messages.size(), 1U);
+  EXPECT_EQ(r.messages[0].payload, payload);
+  EXPECT_EQ(r.messages[0].frame, 3U);
 }
 
 TEST(CaptureFragments, PaddingOfAShortFragmentIsNotPayload) {
   bytes first = fragment(0, 16);  // 16 bytes of IP payload: Ethernet pads the frame to 60
   first.resize(60, 0xee);
   const auto r = frames("padded", {first, fragment(16, 2000)});
-  ASSERT_EQ(r.datagrams.size(), 1U);
-  EXPECT_EQ(r.datagrams[0].payload, payload);
+  ASSERT_EQ(r.messages.size(), 1U);
+  EXPECT_EQ(r.messages[0].payload, payload);
 }
 
 TEST(CaptureFragments, InterleavedDatagramsAreKeptApart) {
   const auto r =
       frames("interleaved", {fragment(0, 512, 1), fragment(0, 512, 2), fragment(512, 2000, 2), fragment(512, 2000, 1)});
-  ASSERT_EQ(r.datagrams.size(), 2U);
-  EXPECT_EQ(r.datagrams[0].frame, 3U);
-  EXPECT_EQ(r.datagrams[1].frame, 4U);
-  EXPECT_EQ(r.datagrams[1].payload, payload);
+  ASSERT_EQ(r.messages.size(), 2U);
+  EXPECT_EQ(r.messages[0].frame, 3U);
+  EXPECT_EQ(r.messages[1].frame, 4U);
+  EXPECT_EQ(r.messages[1].payload, payload);
 }
 
 TEST(CaptureFragments, OverlapDropsTheDatagram) {
   const auto r = frames("overlap", {fragment(0, 400), fragment(392, 800), fragment(800, 2000)});
-  EXPECT_TRUE(r.datagrams.empty());
+  EXPECT_TRUE(r.messages.empty());
   EXPECT_EQ(r.drops[drop::fragment_overlap], 1U);
 }
 
 TEST(CaptureFragments, OverlapWithTheFollowingPieceDropsTheDatagram) {
   const auto r = frames("overlapnext", {fragment(400, 800), fragment(0, 408), fragment(800, 2000)});
-  EXPECT_TRUE(r.datagrams.empty());
+  EXPECT_TRUE(r.messages.empty());
   EXPECT_EQ(r.drops[drop::fragment_overlap], 1U);
 }
 
 TEST(CaptureFragments, MissingFragmentLeavesItIncomplete) {
   const auto r = frames("missing", {fragment(0, 400), fragment(800, 2000)});
-  EXPECT_TRUE(r.datagrams.empty());
+  EXPECT_TRUE(r.messages.empty());
   EXPECT_EQ(r.drops[drop::fragment_incomplete], 1U);
 }
 
@@ -88,14 +88,14 @@ TEST(CaptureFragments, NonLastFragmentNotAMultipleOfEightIsNamed) {
 TEST(CaptureFragments, TwoDifferentEndsAreNamed) {
   const bytes early_end(whole.begin() + 400, whole.begin() + 1000);
   const auto r = frames("twoends", {fragment(800, 2000), ethernet(ipv4(early_end, {.id = 7, .offset = 400}))});
-  EXPECT_TRUE(r.datagrams.empty());
+  EXPECT_TRUE(r.messages.empty());
   EXPECT_EQ(r.drops[drop::fragment_conflicting_end], 1U);
 }
 
 TEST(CaptureFragments, FragmentPastTheEndIsNamed) {
   const bytes beyond = ethernet(ipv4(bytes(8), {.id = 7, .more_fragments = true, .offset = 1008}));
   const auto lying = frames("pastend", {fragment(400, 2000), beyond, fragment(0, 400)});
-  EXPECT_TRUE(lying.datagrams.empty());
+  EXPECT_TRUE(lying.messages.empty());
   EXPECT_EQ(lying.drops[drop::fragment_past_end], 1U);
 }
 
@@ -105,8 +105,8 @@ TEST(CaptureFragments, OldFragmentsTimeOutByCaptureTime) {
   // Frames at seconds 1, 2, 3, ...: the first is 3 s old when the fourth comes.
   const auto r = frames(
       "timeout", {fragment(0, 400, 1), fragment(0, 400, 2), fragment(400, 2000, 2), fragment(400, 2000, 1)}, limits);
-  ASSERT_EQ(r.datagrams.size(), 1U);
-  EXPECT_EQ(r.datagrams[0].frame, 3U);
+  ASSERT_EQ(r.messages.size(), 1U);
+  EXPECT_EQ(r.messages[0].frame, 3U);
   EXPECT_EQ(r.drops[drop::fragment_timeout], 1U);
 }
 
@@ -117,7 +117,7 @@ TEST(CaptureFragments, PendingDatagramsAreCapped) {
       "cap",
       {fragment(0, 400, 1), fragment(0, 400, 2), fragment(0, 400, 3), fragment(400, 2000, 1), fragment(400, 2000, 2)},
       limits);
-  EXPECT_EQ(r.datagrams.size(), 2U);
+  EXPECT_EQ(r.messages.size(), 2U);
   EXPECT_EQ(r.drops[drop::fragments_pending_full], 1U);
 }
 
@@ -125,7 +125,7 @@ TEST(CaptureFragments, PendingBytesAreCapped) {
   reassembly_limits limits;
   limits.max_bytes = 1500;  // one datagram's 1008 bytes, not two
   const auto r = frames("bytes", {fragment(0, 800, 1), fragment(0, 800, 2), fragment(800, 2000, 1)}, limits);
-  EXPECT_EQ(r.datagrams.size(), 1U);
+  EXPECT_EQ(r.messages.size(), 1U);
   EXPECT_EQ(r.drops[drop::fragments_pending_full], 1U);
 }
 

@@ -22,14 +22,15 @@ read_all_result one_frame(const std::string& name, int link, const bytes& frame)
 
 void expect_the_datagram(const read_all_result& r) {
   ASSERT_EQ(r.error, "");
-  ASSERT_EQ(r.datagrams.size(), 1U);
-  const udp_datagram& d = r.datagrams[0];
+  ASSERT_EQ(r.messages.size(), 1U);
+  const message& d = r.messages[0];
   EXPECT_EQ(d.frame, 1U);
   EXPECT_EQ(d.time.sec, 5);
   EXPECT_EQ(d.time.nsec, 250U);
   EXPECT_EQ(d.source, (endpoint{0xc0a80001, 50000}));
   EXPECT_EQ(d.destination, (endpoint{0xc0a80002, 44818}));
   EXPECT_EQ(d.payload, payload);
+  EXPECT_EQ(d.via, transport::udp);
 }
 
 const bytes packet = ipv4(udp(50000, 44818, payload));
@@ -50,7 +51,7 @@ TEST(CaptureLink, QinQTagsAreSkipped) {
 
 TEST(CaptureLink, TooManyVlanTagsAreNamed) {
   const auto r = one_frame("deep", DLT_EN10MB, ethernet(packet, {0x8100, 0x8100, 0x8100, 0x8100, 0x8100}));
-  EXPECT_TRUE(r.datagrams.empty());
+  EXPECT_TRUE(r.messages.empty());
   EXPECT_EQ(r.drops[drop::vlan_tags_too_deep], 1U);
 }
 
@@ -68,14 +69,14 @@ TEST(CaptureLink, RawIpv6IsOtherTraffic) {
   bytes v6 = packet;
   v6[0] = 0x60;
   const auto r = one_frame("raw6", DLT_RAW, v6);
-  EXPECT_TRUE(r.datagrams.empty());
+  EXPECT_TRUE(r.messages.empty());
   EXPECT_EQ(r.drops[drop::not_ipv4], 1U);
   EXPECT_EQ(r.drops.malformed_total(), 0U);
 }
 
 TEST(CaptureLink, UnsupportedLinkTypeIsNamed) {
   const auto r = one_frame("ppp", DLT_PPP, packet);
-  EXPECT_TRUE(r.datagrams.empty());
+  EXPECT_TRUE(r.messages.empty());
   EXPECT_EQ(r.drops[drop::link_type_unsupported], 1U);
 }
 
@@ -85,21 +86,23 @@ TEST(CaptureLink, OtherTrafficIsCountedAndFramesStillNumbered) {
     capture_writer w(file.path(), DLT_EN10MB);
     w.write(ethernet(pattern(28), {}, 0x0806));             // ARP
     w.write(ethernet(ipv4(udp(5353, 53, payload))));        // DNS
-    w.write(ethernet(ipv4(pattern(20), {.protocol = 6})));  // TCP
+    w.write(ethernet(ipv4(pattern(20), {.protocol = 1})));  // ICMP
     w.write(ethernet(ipv4(udp(2222, 2222, payload))));      // class 1 I/O
     w.write(ethernet(ipv4(udp(44818, 60000, payload))));    // a reply
+    w.write(ethernet(ipv4(pattern(20), {.protocol = 6})));  // TCP, ports 0x0001 and 0x0203
   }
   const auto r = read_all(file.path());
   ASSERT_EQ(r.error, "");
-  ASSERT_EQ(r.datagrams.size(), 2U);
-  EXPECT_EQ(r.datagrams[0].frame, 4U);
-  EXPECT_EQ(r.datagrams[0].destination.port, 2222);
-  EXPECT_EQ(r.datagrams[1].frame, 5U);
-  EXPECT_EQ(r.datagrams[1].source.port, 44818);
-  EXPECT_EQ(r.frames, 5U);
+  ASSERT_EQ(r.messages.size(), 2U);
+  EXPECT_EQ(r.messages[0].frame, 4U);
+  EXPECT_EQ(r.messages[0].destination.port, 2222);
+  EXPECT_EQ(r.messages[1].frame, 5U);
+  EXPECT_EQ(r.messages[1].source.port, 44818);
+  EXPECT_EQ(r.frames, 6U);
   EXPECT_EQ(r.drops[drop::not_ipv4], 1U);
   EXPECT_EQ(r.drops[drop::udp_port_other], 1U);
   EXPECT_EQ(r.drops[drop::ip_protocol_other], 1U);
+  EXPECT_EQ(r.drops[drop::tcp_port_other], 1U);
   EXPECT_EQ(r.drops.malformed_total(), 0U);
 }
 

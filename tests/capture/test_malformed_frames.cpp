@@ -22,7 +22,7 @@ read_all_result frames(const std::string& name, const std::vector<bytes>& fs, st
 
 TEST(CaptureMalformed, SnaplenCutFrameIsNamedTruncated) {
   const auto r = frames("snap", {ethernet(ipv4(udp(1, 44818, payload)))}, 14 + 20 + 8 + 10);
-  EXPECT_TRUE(r.datagrams.empty());
+  EXPECT_TRUE(r.messages.empty());
   EXPECT_EQ(r.drops[drop::truncated_by_snaplen], 1U);
   EXPECT_EQ(r.drops[drop::ip_total_length_lies], 0U);
 }
@@ -41,7 +41,7 @@ TEST(CaptureMalformed, TotalLengthThatLiesIsNamed) {
   bytes packet = ipv4(udp(1, 44818, payload));
   packet[3] = static_cast<std::uint8_t>(packet[3] + 10);  // ten bytes more than the frame holds
   const auto r = frames("iplen", {ethernet(packet)});
-  EXPECT_TRUE(r.datagrams.empty());
+  EXPECT_TRUE(r.messages.empty());
   EXPECT_EQ(r.drops[drop::ip_total_length_lies], 1U);
 }
 
@@ -65,7 +65,7 @@ TEST(CaptureMalformed, UdpLengthThatLiesIsNamed) {
   bytes datagram = udp(1, 44818, payload);
   datagram[5] = static_cast<std::uint8_t>(datagram[5] + 1);
   const auto r = frames("udplen", {ethernet(ipv4(datagram))});
-  EXPECT_TRUE(r.datagrams.empty());
+  EXPECT_TRUE(r.messages.empty());
   EXPECT_EQ(r.drops[drop::udp_length_lies], 1U);
 }
 
@@ -73,8 +73,8 @@ TEST(CaptureMalformed, UdpLengthShorterThanIpTrimsThePayload) {
   bytes datagram = udp(1, 44818, payload);
   datagram[5] = static_cast<std::uint8_t>(datagram[5] - 4);
   const auto r = frames("udpshort", {ethernet(ipv4(datagram))});
-  ASSERT_EQ(r.datagrams.size(), 1U);
-  EXPECT_EQ(r.datagrams[0].payload, bytes(payload.begin(), payload.end() - 4));
+  ASSERT_EQ(r.messages.size(), 1U);
+  EXPECT_EQ(r.messages[0].payload, bytes(payload.begin(), payload.end() - 4));
 }
 
 TEST(CaptureMalformed, UdpHeaderShortIsNamed) {
@@ -91,14 +91,14 @@ TEST(CaptureFile, TruncatedFileKeepsWhatCameBeforeAndSaysWhy) {
   }
   std::filesystem::resize_file(file.path(), std::filesystem::file_size(file.path()) - 5);
   const auto r = read_all(file.path());
-  EXPECT_EQ(r.datagrams.size(), 1U);
+  EXPECT_EQ(r.messages.size(), 1U);
   EXPECT_NE(r.error.find("truncated"), std::string::npos) << r.error;
 }
 
 TEST(CaptureFile, MissingFileIsAnErrorNamingIt) {
   const auto r = read_all("/nonexistent/edsc/plant.pcapng");
   EXPECT_NE(r.error.find("/nonexistent/edsc/plant.pcapng"), std::string::npos) << r.error;
-  EXPECT_TRUE(r.datagrams.empty());
+  EXPECT_TRUE(r.messages.empty());
 }
 
 TEST(CaptureFile, FileThatIsNoCaptureIsAnError) {

@@ -6,31 +6,17 @@
 #include <gtest/gtest.h>
 #include <netinet/in.h>
 #include <pcap/dlt.h>
-#include <signal.h>
 #include <sys/socket.h>
-#include <sys/wait.h>
 
 #include <chrono>
-#include <cstdio>
 #include <sstream>
 #include <thread>
 
 #include "capture_writer.hpp"
+#include "tshark_tools.hpp"
 
 namespace edsc::capture::test {
 namespace {
-
-std::string run(const std::string& command) {
-  std::string out;
-  FILE* p = ::popen(command.c_str(), "r");
-  if (p == nullptr) return out;
-  char buf[4096];
-  while (const std::size_t n = std::fread(buf, 1, sizeof buf, p)) out.append(buf, n);
-  ::pclose(p);
-  return out;
-}
-
-bool have(const std::string& tool) { return std::system(("command -v " + tool + " >/dev/null 2>&1").c_str()) == 0; }
 
 // "frame srcport dstport udp-length" for each EtherNet/IP UDP datagram, as tshark sees them.
 std::string tshark_lines(const std::string& path) {
@@ -43,7 +29,7 @@ std::string reader_lines(const std::string& path, std::string* error) {
   const auto r = read_all(path);
   *error = r.error;
   std::ostringstream out;
-  for (const udp_datagram& d : r.datagrams) {
+  for (const message& d : r.messages) {
     out << d.frame << '\t' << d.source.port << '\t' << d.destination.port << '\t' << d.payload.size() + 8 << '\n';
   }
   return out.str();
@@ -93,47 +79,7 @@ TEST(CaptureTshark, PcapngMatchesTshark) {
   EXPECT_EQ(ours, tshark_lines(ng.path()));
 }
 
-// tcpdump on the loopback (in immediate mode: otherwise libpcap holds the
-// packets in its ring up to a second, past the test's stop), taking only what this test sends: from
-// 127.0.0.77:2222 (bound here, so no other test's socket has it) to a port
-// nothing listens on.
-class loopback_tcpdump {
- public:
-  explicit loopback_tcpdump(const std::string& path) {
-    int err[2];
-    if (::pipe(err) != 0) return;
-    pid_ = ::fork();
-    if (pid_ == 0) {
-      ::dup2(err[1], 2);
-      ::close(err[0]);
-      ::execlp("tcpdump", "tcpdump", "-i", "lo", "-n", "-U", "--immediate-mode", "-Z", "root", "-w", path.c_str(),
-               "udp and src host 127.0.0.77 and src port 2222", static_cast<char*>(nullptr));
-      ::_exit(127);
-    }
-    ::close(err[1]);
-    // Ready once it says it listens.
-    std::string said;
-    char c;
-    while (said.find("listening on") == std::string::npos && ::read(err[0], &c, 1) == 1) said += c;
-    ::close(err[0]);
-    ready_ = said.find("listening on") != std::string::npos;
-  }
-  ~loopback_tcpdump() { stop(); }
-  loopback_tcpdump(const loopback_tcpdump&) = delete;
-  loopback_tcpdump& operator=(const loopback_tcpdump&) = delete;
-  [[nodiscard]] bool ready() const { return ready_; }
-  void stop() {
-    if (pid_ <= 0) return;
-    ::kill(pid_, SIGTERM);
-    ::waitpid(pid_, nullptr, 0);
-    pid_ = -1;
-  }
-
- private:
-  pid_t pid_ = -1;
-  bool ready_ = false;
-};
-
+// Datagrams from 127.0.0.77:2222 (bound here) to a port nothing listens on.
 TEST(CaptureTshark, TcpdumpOfLoopbackMatchesTshark) {
   if (::geteuid() != 0) GTEST_SKIP() << "tcpdump -i lo needs root";
   if (!have("tcpdump") || !have("tshark")) GTEST_SKIP() << "tcpdump or tshark is not installed";
@@ -148,7 +94,7 @@ TEST(CaptureTshark, TcpdumpOfLoopbackMatchesTshark) {
     GTEST_SKIP() << "127.0.0.77:2222 is taken";
   }
   scratch_file file("tcpdump.pcap");
-  loopback_tcpdump dump(file.path());
+  loopback_tcpdump dump(file.path(), "udp and src host 127.0.0.77 and src port 2222");
   ASSERT_TRUE(dump.ready());
   sockaddr_in to = from;
   to.sin_port = htons(47339);  // nothing listens: the kernel answers port unreachable, also on lo
@@ -166,8 +112,8 @@ TEST(CaptureTshark, TcpdumpOfLoopbackMatchesTshark) {
   EXPECT_EQ(std::count(ours.begin(), ours.end(), '\n'), static_cast<long>(std::size(sizes)));
   EXPECT_EQ(ours, tshark_lines(file.path()));
   const auto r = read_all(file.path());
-  ASSERT_EQ(r.datagrams.size(), std::size(sizes));
-  EXPECT_EQ(r.datagrams[5].payload, pattern(9000, static_cast<std::uint8_t>(9000)));
+  ASSERT_EQ(r.messages.size(), std::size(sizes));
+  EXPECT_EQ(r.messages[5].payload, pattern(9000, static_cast<std::uint8_t>(9000)));
 }
 
 }  // namespace
