@@ -81,7 +81,7 @@ void tracker::request(const message& m, const cip::encap_header& h, cip::byte_vi
   auto q = cip::decode_request(cip, base);
   if (!q) return problem(m, fmt::format("CIP request: {}", q.error().what));
   const auto s = cip::code(q->service);
-  const request_key key{m.source, m.destination, h.session, h.context};
+  const auto key = key_of(m.source, m.destination, h);
   const auto data_base = static_cast<std::size_t>(q->data.data() - m.payload.data());
   if (pending_.size() >= limits_.max_pending_requests) {
     ++over_limits_;  // replies that never came: the oldest waits are forgotten
@@ -126,7 +126,7 @@ void tracker::request(const message& m, const cip::encap_header& h, cip::byte_vi
 }
 
 void tracker::reply(const message& m, const cip::encap_header& h, cip::byte_view cip) {
-  const auto it = pending_.find(request_key{m.destination, m.source, h.session, h.context});
+  const auto it = pending_.find(key_of(m.destination, m.source, h));
   if (it == pending_.end()) return;  // a reply to a request before the capture began, or to one not tracked
   const auto p = it->second;
   pending_.erase(it);
@@ -187,8 +187,10 @@ void tracker::io(const message& m) {
     const auto us = static_cast<std::uint64_t>(std::max<std::int64_t>(now - d.last_ns, 0) / 1000);
     d.intervals.add(us, m.frame);
     const auto limit = c.timeout_us(ot);
-    if (limit > 0 && us > limit && c.close_frame == 0 && c.timeout_after_frame == 0)
+    if (limit > 0 && us > limit && c.close_frame == 0 && c.timeout_after_frame == 0) {
       c.timeout_after_frame = d.last_frame;
+      c.timeout_ot = ot;
+    }
     const std::uint32_t step = f->encap_sequence - d.last_sequence;  // modulo 2^32
     if (step >= 0x80000000u)
       ++d.out_of_order;
@@ -226,6 +228,7 @@ void tracker::finish(std::int64_t end_ns) {
       const auto silent_us = static_cast<std::uint64_t>(std::max<std::int64_t>(end_ns - since_ns, 0) / 1000);
       if (silent_us > c.timeout_us(ot)) {
         c.timeout_after_frame = d.frames > 0 ? d.last_frame : c.reply_frame;
+        c.timeout_ot = ot;
         break;
       }
     }

@@ -65,6 +65,7 @@ struct connection_seen {
   std::uint64_t close_frame = 0;  // Forward_Close request seen
   // No frame in a direction for the connection's timeout: where it ran out.
   std::uint64_t timeout_after_frame = 0;
+  bool timeout_ot = false;  // the O->T direction went silent (else T->O)
   [[nodiscard]] bool refused() const { return reply_frame != 0 && !granted; }
   // The connection's timeout: the multiplier (4 << m) times the O->T RPI (the
   // target's watch) or the T->O RPI (the originator's), in microseconds.
@@ -125,7 +126,12 @@ class tracker {
   void forward_open_reply(connection_seen& c, const message& m, const cip::reply& r);
 
   // A request waiting for its reply: by session, sender context and endpoints.
-  using request_key = std::tuple<endpoint, endpoint, std::uint32_t, cip::sender_context>;
+  using request_key = std::tuple<std::uint32_t, std::uint16_t, std::uint32_t, std::uint16_t, std::uint32_t,
+                                 cip::sender_context>;
+  [[nodiscard]] static request_key key_of(const endpoint& originator, const endpoint& target,
+                                          const cip::encap_header& h) {
+    return {originator.address, originator.port, target.address, target.port, h.session, h.context};
+  }
   struct pending {
     enum class kind : std::uint8_t { forward_open, write, identity } what = kind::forward_open;
     std::size_t index = 0;  // into connections_ or writes_
