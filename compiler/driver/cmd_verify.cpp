@@ -15,6 +15,7 @@
 #include "driver/commands.hpp"
 #include "driver/net_report.hpp"
 #include "driver/output.hpp"
+#include "driver/verify_capture.hpp"
 #include "driver/verify_live.hpp"
 #include "io/read_file.hpp"
 #include "network/plan.hpp"
@@ -26,7 +27,8 @@ namespace edsc::driver {
 namespace {
 
 struct verify_cli {
-  std::string eds, capture, decode, network;
+  std::vector<std::string> eds_files;  // several only for a packet capture
+  std::string eds, capture, decode, network, library;
   int mac = -1;  // -1: every node heard
   std::vector<std::string> warning_flags;
   color_mode color = color_mode::auto_detect;
@@ -120,10 +122,44 @@ std::vector<std::string> given(const CLI::App& cmd, std::initializer_list<const 
   return out;
 }
 
-int run_verify(const verify_cli& cli, const CLI::App& cmd) {
+// An EtherNet/IP packet capture (pcap, pcapng) against one or more EDS files.
+int run_packet_capture(const verify_cli& cli, const CLI::App& cmd) {
+  if (const auto extra = given(cmd, {"--mac", "--network", "--decode"}); !extra.empty()) {
+    print_error(fmt::format("{} {} for CAN captures; {} is a packet capture", fmt::join(extra, ", "),
+                            extra.size() == 1 ? "is" : "are", cli.capture));
+    return exit_failure;
+  }
+  verify_capture_cli c;
+  c.eds = cli.eds_files;
+  c.library = cli.library;
+  c.capture = cli.capture;
+  c.warning_flags = cli.warning_flags;
+  c.color = cli.color;
+  c.format = cli.format;
+  return run_verify_capture(c);
+}
+
+int run_verify(verify_cli& cli, const CLI::App& cmd) {
+  if (cli.live.host.empty() && !cli.capture.empty() && cli.decode.empty() && is_packet_capture(cli.capture)) {
+    if (const auto extra = given(cmd, {"--connections", "--timeout", "--watch"}); !extra.empty()) {
+      print_error(fmt::format("{} {} to a live device: {} --live HOST", fmt::join(extra, ", "),
+                              extra.size() == 1 ? "applies" : "apply", extra.size() == 1 ? "it needs" : "they need"));
+      return exit_failure;
+    }
+    return run_packet_capture(cli, cmd);
+  }
+  if (cli.eds_files.size() > 1) {
+    print_error("verify takes several EDS files only with --capture of a packet capture (pcap, pcapng)");
+    return exit_failure;
+  }
+  if (!cli.library.empty()) {
+    print_error("--library is for --capture of a packet capture (pcap, pcapng)");
+    return exit_failure;
+  }
+  cli.eds = cli.eds_files.empty() ? std::string() : cli.eds_files.front();
   if (!cli.live.host.empty()) {
     // A capture's options mean nothing to a live device: refused, not ignored.
-    if (const auto extra = given(cmd, {"--capture", "--mac", "--network", "--decode"}); !extra.empty()) {
+    if (const auto extra = given(cmd, {"--capture", "--mac", "--network", "--decode", "--library"}); !extra.empty()) {
       print_error(
           fmt::format("verify --live compares a running device with its EDS; {} {} for CAN captures and "
                       "cannot be used with it",
@@ -212,10 +248,17 @@ void register_verify(CLI::App& app, command_action& run) {
       "verify",
       "Check a device against its EDS: a DeviceNet device's answers in a CAN capture (docs/verify.md), or a "
       "running EtherNet/IP device with --live (docs/live.md)");
-  takes(cmd->add_option("eds", cli->eds, "The device's EDS file"), arg_kind::eds);
+  takes(cmd->add_option("eds", cli->eds_files,
+                        "The device's EDS file (with a packet capture: the EDS files of its devices)"),
+        arg_kind::eds);
   takes(cmd->add_option("--capture", cli->capture,
-                        "CAN log: candump -l/-L, candump screen output, or step/dir/can_id/data TSV"),
+                        "CAN log (candump -l/-L, candump screen output, step/dir/can_id/data TSV), or an "
+                        "EtherNet/IP packet capture (pcap, pcapng; docs/capture.md)"),
         arg_kind::file);
+  takes(cmd->add_option("--library", cli->library,
+                        "With a packet capture: judge each device against the EDS files of this folder that "
+                        "describe it"),
+        arg_kind::dir);
   add_number(cmd, "--mac", cli->mac, 0, 63, "Compare only the node at this MAC ID (default: every node heard)");
   takes(cmd->add_option("--network", cli->network,
                         "Judge every node of this network file (TOML, docs/network.md) instead of one EDS"),
@@ -227,6 +270,8 @@ void register_verify(CLI::App& app, command_action& run) {
   add_report_options(cmd, cli->color, cli->format, cli->warning_flags);
   add_example(cmd, "edsc verify node.eds --capture startup.log", "compare a CAN capture with the EDS");
   add_example(cmd, "edsc verify --live 198.51.100.20 device.eds", "compare a running EtherNet/IP device with its EDS");
+  add_example(cmd, "edsc verify --capture plant.pcapng --library eds/",
+              "judge an EtherNet/IP capture's connections against the devices' EDS files");
   cmd->callback([&run, cli, cmd] { run = [cli, cmd] { return run_verify(*cli, *cmd); }; });
 }
 
