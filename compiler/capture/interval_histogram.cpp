@@ -1,5 +1,6 @@
 #include "capture/interval_histogram.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -24,6 +25,7 @@ void interval_histogram::add(std::uint64_t us, std::uint64_t frame) {
   auto& n = counts_[bucket_of(us)];
   if (n < std::numeric_limits<std::uint32_t>::max()) ++n;  // a bucket saturates rather than wraps
   ++count_;
+  if (us < least_ || count_ == 1) least_ = us;
   if (us > worst_ || count_ == 1) {
     worst_ = us;
     worst_frame_ = frame;
@@ -38,7 +40,7 @@ std::uint64_t interval_histogram::quantile(double q) const {
   std::uint64_t seen = 0;
   for (std::size_t b = 0; b < bucket_count; ++b) {
     seen += counts_[b];
-    if (seen >= rank && counts_[b] > 0) return middle_of(b);
+    if (seen >= rank && counts_[b] > 0) return std::clamp(middle_of(b), least_, worst_);
   }
   return worst_;
 }

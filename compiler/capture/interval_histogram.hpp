@@ -13,8 +13,9 @@ class interval_histogram {
   void add(std::uint64_t us, std::uint64_t frame);
 
   [[nodiscard]] std::uint64_t count() const { return count_; }
-  // The interval at the q-th quantile (0 < q <= 1): the middle of its bucket,
-  // or the exact value below 128 us. 0 when nothing was added.
+  // The interval at the q-th quantile (0 < q <= 1): the middle of its bucket
+  // (the exact value below 128 us), kept within the least and the largest
+  // interval seen, so a steady interval reads exactly. 0 when nothing was added.
   [[nodiscard]] std::uint64_t quantile(double q) const;
   [[nodiscard]] std::uint64_t worst() const { return worst_; }
   [[nodiscard]] std::uint64_t worst_frame() const { return worst_frame_; }  // the frame that ended it
@@ -26,6 +27,7 @@ class interval_histogram {
  private:
   std::array<std::uint32_t, bucket_count> counts_{};
   std::uint64_t count_ = 0;
+  std::uint64_t least_ = 0;
   std::uint64_t worst_ = 0;
   std::uint64_t worst_frame_ = 0;
 };

@@ -127,6 +127,10 @@ class judge {
   void io(std::size_t eds, const capture::connection_seen& c, const connections::connection_point& p);
   void direction(std::size_t eds, const capture::connection_seen& c, const connections::connection_point& p, bool ot);
   void writes();
+  [[nodiscard]] span rpi_field(std::size_t eds, const connections::connection_point& p, bool ot) const {
+    const auto& v = ot ? p.plan.conn->ot_rpi : p.plan.conn->to_rpi;
+    return v.present() && !v.from.where.empty() ? v.from.where : views_[eds].setting(p.number)->at;
+  }
   [[nodiscard]] span site(std::size_t eds, std::uint32_t number, ext status,
                           std::optional<std::uint16_t> accepted = std::nullopt) const;
 
@@ -249,7 +253,7 @@ void judge::direction(std::size_t eds, const capture::connection_seen& c, const 
   const auto api = ot ? c.granted->ot_api_us : c.granted->to_api_us;
   const auto median = d.intervals.quantile(0.5);
   if (d.intervals.count() >= 3 && api > 0 && median * 2 > api * 3)
-    add(eds, diag_id::capture_io_interval, site(eds, p.number, ext::rpi_not_supported),
+    add(eds, diag_id::capture_io_interval, rpi_field(eds, p, ot),
         fmt::format("Connection{}'s {} frames come every {} (median; p99 {}, worst gap {} ending at frame {}), the "
                     "device granted {}",
                     p.number, dir, ms_text(median), ms_text(d.intervals.quantile(0.99)), ms_text(d.intervals.worst()),

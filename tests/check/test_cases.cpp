@@ -109,6 +109,17 @@ TEST(check_cases, every_rule_has_a_triggering_case) {
       "verify-undecodable",
       "verify-log-line",
       "verify-no-node",
+      // EtherNet/IP captures: tests/capture/test_judge.cpp, tests/sim/test_sim_capture.cpp.
+      "capture-identity",
+      "capture-forward-open",
+      "capture-forward-open-granted",
+      "capture-refused",
+      "capture-path-unknown",
+      "capture-io-size",
+      "capture-io-interval",
+      "capture-io-lost",
+      "capture-timeout",
+      "capture-write-limits",
       // Network files (TOML) and captures against them: tests/network/.
       "net-syntax",
       "net-key-missing",
