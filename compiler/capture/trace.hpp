@@ -126,8 +126,8 @@ class tracker {
   void forward_open_reply(connection_seen& c, const message& m, const cip::reply& r);
 
   // A request waiting for its reply: by session, sender context and endpoints.
-  using request_key = std::tuple<std::uint32_t, std::uint16_t, std::uint32_t, std::uint16_t, std::uint32_t,
-                                 cip::sender_context>;
+  using request_key =
+      std::tuple<std::uint32_t, std::uint16_t, std::uint32_t, std::uint16_t, std::uint32_t, cip::sender_context>;
   [[nodiscard]] static request_key key_of(const endpoint& originator, const endpoint& target,
                                           const cip::encap_header& h) {
     return {originator.address, originator.port, target.address, target.port, h.session, h.context};

@@ -270,7 +270,7 @@ void register_verify(CLI::App& app, command_action& run) {
   add_report_options(cmd, cli->color, cli->format, cli->warning_flags);
   add_example(cmd, "edsc verify node.eds --capture startup.log", "compare a CAN capture with the EDS");
   add_example(cmd, "edsc verify --live 198.51.100.20 device.eds", "compare a running EtherNet/IP device with its EDS");
-  add_example(cmd, "edsc verify --capture plant.pcapng --library eds/",
+  add_example(cmd, "edsc verify --capture session.pcap --library .",
               "judge an EtherNet/IP capture's connections against the devices' EDS files");
   cmd->callback([&run, cli, cmd] { run = [cli, cmd] { return run_verify(*cli, *cmd); }; });
 }

@@ -71,6 +71,7 @@ std::vector<capture_device> find_devices(const capture::tracker& t, std::span<co
   std::map<std::uint32_t, capture_device> by_address;
   for (const auto& id : t.identities()) {
     auto& d = by_address[id.address];
+    if (d.identity) continue;  // the first the capture shows
     d.address = id.address;
     d.identity = id.id;
     d.identity_frame = id.frame;

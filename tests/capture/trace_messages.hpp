@@ -23,7 +23,7 @@ inline const cip::sender_context context{1, 2, 3, 4, 5, 6, 7, 8};
 inline std::int64_t ms(double v) { return static_cast<std::int64_t>(v * 1'000'000); }
 
 inline message at(std::uint64_t frame, std::int64_t ns, endpoint from, endpoint to, cip::bytes payload,
-           transport via = transport::tcp) {
+                  transport via = transport::tcp) {
   message m;
   m.frame = frame;
   m.time = {ns / 1'000'000'000, static_cast<std::uint32_t>(ns % 1'000'000'000)};
