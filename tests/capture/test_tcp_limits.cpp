@@ -30,9 +30,10 @@ TEST(CaptureTcpLimits, DataOffsetThatLiesIsNamed) {
 }
 
 TEST(CaptureTcpLimits, OptionsAreSkipped) {
-  const auto r = read_frames("tcpoptions", {client.at(0, request, {.data_offset = 8})});
+  const auto r = read_frames("tcpoptions", {client.syn(), client.at(0, request, {.data_offset = 8})});
   ASSERT_EQ(r.messages.size(), 1U);
   EXPECT_EQ(r.messages[0].payload, request);
+  EXPECT_EQ(r.drops.malformed_total(), 0U);
 }
 
 TEST(CaptureTcpLimits, OtherPortsAreOtherTraffic) {
