@@ -2,6 +2,8 @@
 
 #include <pcap/pcap.h>
 
+#include <cstdio>
+
 namespace edsc::capture {
 
 void pcap_source::closer::operator()(pcap* p) const { pcap_close(p); }
@@ -11,6 +13,21 @@ result<pcap_source, capture_error> pcap_source::open(const std::string& path) {
   // Nanoseconds asked for: libpcap scales microsecond files up, never down.
   pcap_t* p = pcap_open_offline_with_tstamp_precision(path.c_str(), PCAP_TSTAMP_PRECISION_NANO, errbuf);
   if (p == nullptr) return fail(capture_error{path + ": " + errbuf, 0});
+  std::unique_ptr<pcap, closer> handle(p);
+  const int link = pcap_datalink(p);
+  return pcap_source(std::move(handle), link);
+}
+
+result<pcap_source, capture_error> pcap_source::open_memory(std::span<const std::uint8_t> bytes) {
+  // libpcap reads a FILE; fmemopen makes one of the bytes without a copy.
+  FILE* f = bytes.empty() ? nullptr : fmemopen(const_cast<std::uint8_t*>(bytes.data()), bytes.size(), "rb");
+  if (f == nullptr) return fail(capture_error{"an empty capture", 0});
+  char errbuf[PCAP_ERRBUF_SIZE] = {};
+  pcap_t* p = pcap_fopen_offline_with_tstamp_precision(f, PCAP_TSTAMP_PRECISION_NANO, errbuf);
+  if (p == nullptr) {
+    std::fclose(f);  // libpcap closes the FILE only with the handle it made of it
+    return fail(capture_error{errbuf, 0});
+  }
   std::unique_ptr<pcap, closer> handle(p);
   const int link = pcap_datalink(p);
   return pcap_source(std::move(handle), link);

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 
 #include "base/result.hpp"
@@ -22,6 +23,8 @@ struct capture_error {
 class pcap_source {
  public:
   [[nodiscard]] static result<pcap_source, capture_error> open(const std::string& path);
+  // A capture held in memory (the fuzz target's input); `bytes` must outlive the source.
+  [[nodiscard]] static result<pcap_source, capture_error> open_memory(std::span<const std::uint8_t> bytes);
 
   // The next frame, or no frame at the end of the file. The frame's bytes
   // stay valid until the next call.

@@ -12,6 +12,13 @@ result<reader, capture_error> reader::open(const std::string& path, reassembly_l
   return reader(std::move(*source), limits, tcp);
 }
 
+result<reader, capture_error> reader::open_memory(std::span<const std::uint8_t> bytes, reassembly_limits limits,
+                                                  tcp_limits tcp) {
+  auto source = pcap_source::open_memory(bytes);
+  if (!source) return fail(source.error());
+  return reader(std::move(*source), limits, tcp);
+}
+
 result<std::optional<message>, capture_error> reader::next() {
   while (taken_ == ready_.size()) {
     ready_.clear();

@@ -4,6 +4,7 @@
 // TCP streams put back together and cut into encapsulation messages. What is
 // not EtherNet/IP, and every malformed frame, is counted by name in drops().
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,9 @@ class reader {
  public:
   [[nodiscard]] static result<reader, capture_error> open(const std::string& path, reassembly_limits limits = {},
                                                           tcp_limits tcp = {});
+  // A capture held in memory; `bytes` must outlive the reader.
+  [[nodiscard]] static result<reader, capture_error> open_memory(std::span<const std::uint8_t> bytes,
+                                                                 reassembly_limits limits = {}, tcp_limits tcp = {});
 
   // The next EtherNet/IP message, or none at the end of the capture. An
   // error (a file cut short) ends the reading; what came before stands.

@@ -65,7 +65,7 @@ struct read_capture {
 std::optional<read_capture> read(const std::string& path) {
   auto r = capture::reader::open(path);
   if (!r) {
-    print_error(fmt::format("{}: {}", path, r.error().message));
+    print_error(r.error().message);  // it names the file
     return std::nullopt;
   }
   read_capture out;

@@ -13,6 +13,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "capture/reader.hpp"
+#include "capture/trace.hpp"
 #include "check/check_file.hpp"
 #include "cip/connection_manager.hpp"
 #include "cip/encap.hpp"
@@ -40,6 +42,7 @@
 #include "sim/state.hpp"
 #include "source/line_starts.hpp"
 #include "source/source_file.hpp"
+#include "verify/enip_capture.hpp"
 
 namespace edsc::fuzz {
 
@@ -516,4 +519,72 @@ inline std::string session_body(std::string_view input) {
   }
   return {};
 }
+// The EDS a fuzzed capture is judged against: one class 1 connection with
+// configuration, run/idle O->T, RPI limits from a parameter.
+inline constexpr const char* capture_eds = R"eds([File]
+DescText = "fuzz";
+CreateDate = 01-01-2020;
+CreateTime = 00:00:00;
+Revision = 1.0;
+
+[Device]
+VendCode = 1;
+VendName = "edsc";
+ProdType = 12;
+ProdTypeStr = "Communications Adapter";
+ProdCode = 2;
+MajRev = 1;
+MinRev = 1;
+ProdName = "simulator objects";
+Catalog = "s";
+
+[Params]
+Param1 = 0,,,0x0000,0xC8,4,"RPI","us","",10000,50000,20000,,,,,,,,,;
+Param2 = 0,,,0x0000,0xC7,2,"Speed","","",0,100,50,,,,,,,,,;
+
+[Assembly]
+Assem100 = "In","20 04 24 64 30 03",8,0x0000,,,64,;
+Assem150 = "Out","20 04 24 96 30 03",4,0x0000,,,,;
+Assem151 = "Cfg","20 04 24 97 30 03",2,0x0000,,,16,Param2;
+
+[Connection Manager]
+Connection1 = 0x04010002,0x44640405,Param1,4,Assem150,Param1,8,Assem100,,,2,Assem151,"io","","20 04 24 97 2C 96 2C 64";
+)eds";
+
+// A capture file (pcap, pcapng) read from memory, every message tracked and
+// judged against capture_eds, the timeline rendered: whatever the bytes, the
+// reading ends, nothing throws, and what the reader holds stays within its
+// limits (fragments, TCP bytes held ahead of gaps, open directions).
+inline std::string capture_body(std::string_view input) {
+  const std::span<const std::uint8_t> bytes(reinterpret_cast<const std::uint8_t*>(input.data()), input.size());
+  const capture::reassembly_limits fragments{8, 64 * 1024, 30'000'000'000};
+  capture::tcp_limits tcp;
+  tcp.max_streams = 16;
+  tcp.max_held_per_stream = 4096;
+  tcp.max_held_total = 16 * 1024;
+  auto r = capture::reader::open_memory(bytes, fragments, tcp);
+  if (!r) return r.error().message.empty() ? "a refused capture without a reason" : "";
+  capture::tracker t;
+  std::int64_t last = 0;
+  for (;;) {
+    auto m = r->next();
+    if (!m || !m->has_value()) break;
+    last = std::max(last, (*m)->time.total_ns());
+    t.add(**m);
+    if (r->fragments().pending_bytes() > fragments.max_bytes) return "fragments held past their cap";
+    if (r->streams().open_streams() > tcp.max_streams) return "TCP directions open past their cap";
+    // Each held segment counts 64 bytes more for its bookkeeping (tcp_stream.hpp).
+    if (r->streams().held_bytes() > tcp.max_held_total + 64) return "TCP bytes held past their cap";
+  }
+  t.finish(last);
+  static const auto eds = edit::analyze("fuzz.eds", capture_eds);
+  const verify::capture_eds files[] = {{&eds->dev, eds->source.get()}};
+  const auto v = verify::judge_capture(t, files);
+  const std::string names[] = {"fuzz.eds"};
+  (void)verify::render_timeline(t, v, names);
+  for (const auto& f : v.findings)
+    if (f.d.message.empty()) return "a finding without words";
+  return {};
+}
+
 }  // namespace edsc::fuzz

@@ -20,10 +20,10 @@ namespace fs = std::filesystem;
 
 using body = std::string (*)(std::string_view);
 
-const std::map<std::string, body> bodies = {{"parse", parse_body},     {"check", check_body},    {"fmt", fmt_body},
-                                            {"edit", edit_body},       {"header", header_body},  {"lsp", lsp_body},
-                                            {"network", network_body}, {"diff", diff_body},      {"cip", cip_body},
-                                            {"sim", sim_body},         {"session", session_body}};
+const std::map<std::string, body> bodies = {
+    {"parse", parse_body},   {"check", check_body}, {"fmt", fmt_body},         {"edit", edit_body},
+    {"header", header_body}, {"lsp", lsp_body},     {"network", network_body}, {"diff", diff_body},
+    {"cip", cip_body},       {"sim", sim_body},     {"session", session_body}, {"capture", capture_body}};
 
 // Replays the files of tests/fuzz/<folder>/<target>/; returns how many.
 std::size_t replay(const std::string& target, body run, const char* folder = "regressions") {
@@ -49,6 +49,7 @@ TEST(FuzzRegressions, Diff) { EXPECT_EQ(replay("diff", diff_body), 1u); }
 TEST(FuzzRegressions, DiffSeedPairs) { EXPECT_EQ(replay("diff", diff_body, "seeds"), 2u); }
 TEST(FuzzRegressions, SimSeeds) { EXPECT_EQ(replay("sim", sim_body, "seeds"), 2u); }
 TEST(FuzzRegressions, SessionSeeds) { EXPECT_EQ(replay("session", session_body, "seeds"), 2u); }
+TEST(FuzzRegressions, CaptureSeeds) { EXPECT_EQ(replay("capture", capture_body, "seeds"), 2u); }
 
 // Every folder is a target's and holds inputs: a new finding's folder is
 // replayed here without a new test, and no empty placeholder passes as one.
