@@ -106,7 +106,10 @@ void tracker::request(const message& m, const cip::encap_header& h, cip::byte_vi
   if (is(s, cip::service::forward_close)) {
     auto fc = cip::decode_forward_close_request(q->data, data_base);
     if (!fc) return problem(m, fmt::format("Forward_Close: {}", fc.error().what));
-    if (auto* c = by_triad(connections_, *fc); c != nullptr && c->close_frame == 0) c->close_frame = m.frame;
+    if (auto* c = by_triad(connections_, *fc); c != nullptr && c->close_frame == 0) {
+      c->close_frame = m.frame;
+      c->close_ns = m.time.total_ns();
+    }
     return;
   }
   auto path = cip::decode_path(q->path, base + 2);
@@ -217,15 +220,19 @@ void tracker::mode(io_direction& d, bool run, std::uint64_t frame) {
   if (d.changes.size() < limits_.max_mode_changes) d.changes.push_back({frame, run});
 }
 
+// A direction silent for longer than its timeout before its Forward_Close
+// (the device died and the scanner closed after) or before the capture's
+// end timed out; a silence after the close is the close's doing.
 void tracker::finish(std::int64_t end_ns) {
   for (auto& c : connections_) {
-    if (!c.granted || c.close_frame != 0 || c.timeout_after_frame != 0) continue;
+    if (!c.granted || c.timeout_after_frame != 0) continue;
+    const auto until_ns = c.close_frame != 0 ? c.close_ns : end_ns;
     for (const bool ot : {true, false}) {
       const auto& d = ot ? c.ot : c.to;
       const auto type = ot ? c.request.ot.type : c.request.to.type;
       if (type == cip::conn_type::null) continue;
       const auto since_ns = d.frames > 0 ? d.last_ns : c.reply_ns;
-      const auto silent_us = static_cast<std::uint64_t>(std::max<std::int64_t>(end_ns - since_ns, 0) / 1000);
+      const auto silent_us = static_cast<std::uint64_t>(std::max<std::int64_t>(until_ns - since_ns, 0) / 1000);
       if (silent_us > c.timeout_us(ot)) {
         c.timeout_after_frame = d.frames > 0 ? d.last_frame : c.reply_frame;
         c.timeout_ot = ot;

@@ -63,6 +63,7 @@ struct connection_seen {
   std::vector<std::uint16_t> additional;
   io_direction ot, to;
   std::uint64_t close_frame = 0;  // Forward_Close request seen
+  std::int64_t close_ns = 0;
   // No frame in a direction for the connection's timeout: where it ran out.
   std::uint64_t timeout_after_frame = 0;
   bool timeout_ot = false;  // the O->T direction went silent (else T->O)

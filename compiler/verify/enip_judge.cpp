@@ -225,10 +225,10 @@ void judge::io(std::size_t eds, const capture::connection_seen& c, const connect
   if (c.timeout_after_frame != 0) {
     const auto* s = views_[eds].setting(p.number);
     add(eds, diag_id::capture_timeout, s != nullptr ? s->at : span{},
-        fmt::format("Connection{} timed out: no {} frame for longer than its timeout ({}) after frame {}, and no "
-                    "Forward_Close",
-                    p.number, c.timeout_ot ? "O->T" : "T->O", ms_text(c.timeout_us(c.timeout_ot)),
-                    c.timeout_after_frame));
+        fmt::format("Connection{} timed out: no {} frame for longer than its timeout ({}) after frame {}{}", p.number,
+                    c.timeout_ot ? "O->T" : "T->O", ms_text(c.timeout_us(c.timeout_ot)), c.timeout_after_frame,
+                    c.close_frame != 0 ? fmt::format(", before the Forward_Close of frame {}", c.close_frame)
+                                       : std::string(", and no Forward_Close")));
   }
 }
 

@@ -104,6 +104,26 @@ TEST(capture_trace, silence_longer_than_the_timeout_is_a_timeout) {
   EXPECT_EQ(t.connections()[0].timeout_after_frame, 5U);
 }
 
+// A device that died: its T->O frames stop, the scanner closes later.
+TEST(capture_trace, silence_before_a_late_forward_close_is_a_timeout) {
+  tracker t;
+  t.add(open_frame(1, 0));
+  t.add(grant_frame(2, ms(1)));
+  t.add(to_frame(3, ms(20), 1));
+  for (std::uint32_t i = 1; i <= 40; ++i) t.add(ot_frame(3 + i, ms(10.0 * i), i, true));
+  cip::forward_close_request fc;
+  fc.connection_serial = 0x4501;
+  fc.originator_vendor = 0xFFFF;
+  fc.originator_serial = 0x63736465;
+  fc.path = open_request().path;
+  t.add(at(44, ms(400), scanner, device, rr(cip::encode_forward_close(fc).value())));
+  t.finish(ms(500));
+  const auto& c = t.connections()[0];
+  EXPECT_EQ(c.close_frame, 44U);
+  EXPECT_EQ(c.timeout_after_frame, 3U);  // T->O silent 380 ms > 16 x 20 ms before the close
+  EXPECT_FALSE(c.timeout_ot);
+}
+
 TEST(capture_trace, a_gap_mid_capture_past_the_timeout_is_a_timeout_at_its_start) {
   tracker t;
   t.add(open_frame(1, 0));

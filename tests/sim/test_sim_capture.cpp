@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -65,6 +66,19 @@ void settle(const std::string& pcap) {
   }
 }
 
+// Whether the simulator's event log (sim.log in the network's folder) shows
+// a connection opened, waiting at most 20 s.
+bool opened(const test_network& net) {
+  for (int i = 0; i < 400; ++i) {
+    std::ifstream log(net.dir + "/sim.log");
+    std::stringstream text;
+    text << log.rdbuf();
+    if (text.str().find("\"event\":\"open\"") != std::string::npos) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  return false;
+}
+
 struct session {
   std::string pcap, eds, verify_output;
   int verify_status = -1;
@@ -96,6 +110,66 @@ std::optional<session> record(test_network& net, const std::string& served, cons
   settle(s.pcap);
   net.stop(dump, SIGINT);
   return s;
+}
+
+// A session whose device is hurt once the connection is open: `signal`
+// sent to the simulator (SIGSTOP, continued after `stopped`; SIGKILL).
+std::optional<session> record_hurt(test_network& net, int signal, std::chrono::milliseconds stopped) {
+  session s;
+  s.eds = net.dir + "/device.eds";
+  std::ofstream(s.eds) << device_eds();
+  std::string why;
+  const auto sim = start_sim(net, s.eds, why);
+  if (sim <= 0) {
+    ADD_FAILURE() << why;
+    return std::nullopt;
+  }
+  s.pcap = net.dir + "/session.pcap";
+  const auto dump = net.capture(s.pcap);
+  if (dump <= 0) {
+    ADD_FAILURE() << "tcpdump did not start";
+    return std::nullopt;
+  }
+  std::thread scanner([&] {
+    const auto r = run_edsc("verify --live " + net.device_ip + " " + live_test::quoted(s.eds) +
+                            " --connections --watch 3 --timeout 1 --color never");
+    s.verify_status = r.status;
+    s.verify_output = r.output;
+  });
+  const bool open = opened(net);
+  if (open) {
+    ::kill(sim, signal);
+    if (signal == SIGSTOP) {
+      std::this_thread::sleep_for(stopped);
+      ::kill(sim, SIGCONT);
+    }
+  }
+  scanner.join();
+  settle(s.pcap);
+  net.stop(dump, SIGINT);
+  if (!open) {
+    ADD_FAILURE() << "the simulator never logged the connection open";
+    return std::nullopt;
+  }
+  return s;
+}
+
+// The largest gap between the T->O frames of connection `id`, in
+// microseconds, by tshark's timestamps.
+std::uint64_t tshark_worst_gap_us(const std::string& pcap, std::uint32_t id) {
+  std::istringstream lines(shell_out("tshark -r " + live_test::quoted(pcap) + " -Y " +
+                                     live_test::quoted("enip.cpf.sai.connid == " + std::to_string(id)) +
+                                     " -T fields -e frame.time_epoch 2>/dev/null"));
+  std::uint64_t worst = 0, last = 0;
+  for (std::string t; lines >> t;) {
+    // seconds.nanoseconds, as text: no rounding through a double
+    const auto dot = t.find('.');
+    const auto us =
+        std::stoull(t.substr(0, dot)) * 1'000'000 + std::stoull((t.substr(dot + 1) + "000000").substr(0, 6));
+    if (last != 0) worst = std::max<std::uint64_t>(worst, us - last);
+    last = us;
+  }
+  return worst;
 }
 
 // `edsc ARGS` with its standard output alone, and its exit status.
@@ -185,6 +259,41 @@ TEST_F(sim_capture, a_size_the_device_refuses_is_explained_at_the_eds_field) {
       << out;
   EXPECT_NE(out.find("0x0127"), std::string::npos) << out;
   EXPECT_NE(out.find("[capture-forward-open]"), std::string::npos) << out;
+}
+
+// kill -STOP for 800 ms: no frame for longer than the 320 ms timeout (16 x
+// 20 ms), the gap measured as tshark measures it.
+TEST_F(sim_capture, a_stopped_device_is_a_gap_past_its_timeout) {
+  const auto s = record_hurt(*net_, SIGSTOP, std::chrono::milliseconds(800));
+  ASSERT_TRUE(s);
+  const auto [status, out] =
+      edsc_stdout("verify --capture " + quoted(s->pcap) + " " + quoted(s->eds) + " --format json");
+  const auto j = json::parse(out, nullptr, false);
+  ASSERT_FALSE(j.is_discarded()) << out;
+  EXPECT_EQ(status, 0) << out;  // a timeout is a warning: the network's, not the EDS's
+  const auto& c = j["capture"]["connections"].at(0);
+  const auto worst = c["to"]["worst_interval_us"].get<std::uint64_t>();
+  EXPECT_GE(worst, 800'000U);
+  EXPECT_EQ(worst, tshark_worst_gap_us(s->pcap, c["to_connection_id"].get<std::uint32_t>()));
+  EXPECT_GT(c["timeout_after_frame"].get<unsigned>(), c["reply_frame"].get<unsigned>());
+  bool warned = false;
+  for (const auto& r : j["files"].at(0)["diagnostics"]) warned |= r["id"] == "capture-timeout";
+  EXPECT_TRUE(warned) << out;
+}
+
+// kill -KILL: the T->O frames end for good; the scanner's Forward_Close, if
+// it sends one, comes after the timeout ran out.
+TEST_F(sim_capture, a_killed_device_is_a_timeout) {
+  const auto s = record_hurt(*net_, SIGKILL, {});
+  ASSERT_TRUE(s);
+  const auto [status, out] =
+      edsc_stdout("verify --capture " + quoted(s->pcap) + " " + quoted(s->eds) + " --color never");
+  EXPECT_EQ(status, 0) << out;
+  EXPECT_NE(
+      out.find("warning: Connection1 timed out: no T->O frame for longer than its timeout (320.0 ms) after frame "),
+      std::string::npos)
+      << out;
+  EXPECT_NE(out.find("[capture-timeout]"), std::string::npos) << out;
 }
 
 }  // namespace
