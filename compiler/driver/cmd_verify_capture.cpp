@@ -119,6 +119,7 @@ json connection_json(const capture::connection_seen& c, const verify::connection
             {"connection", v.point ? json(*v.point) : json(nullptr)},
             {"outcome", v.outcome},
             {"not_as_eds", v.fit},
+            {"keying", v.keying},
             {"serial", c.request.connection_serial},
             {"originator_vendor", c.request.originator_vendor},
             {"originator_serial", c.request.originator_serial}};

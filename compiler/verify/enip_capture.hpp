@@ -43,6 +43,7 @@ struct connection_verdict {
   std::optional<std::uint32_t> point;  // N of the ConnectionN its path selects
   std::string outcome;                 // "open", "refused 0x01/0x0127", "no reply"
   std::string fit;                     // why the EDS's ConnectionN does not take it; empty: it does
+  std::string keying;                  // the electronic key and its verdict against [Device]; empty: no key
   // The ConnectionN's formats carry the run/idle header: the bit the tracker
   // follows means run or idle only then.
   bool ot_run_idle = false, to_run_idle = false;

@@ -5,6 +5,7 @@
 #include "cip/request.hpp"
 #include "cip/status.hpp"
 #include "connections/forward_open_fit.hpp"
+#include "connections/plan.hpp"
 #include "connections/served_points.hpp"
 #include "connections/settings.hpp"
 #include "connections/status_site.hpp"
@@ -62,6 +63,25 @@ const char* busy_reason(std::uint8_t general, std::uint16_t ext_code) {
 
 std::uint16_t extended_of(const capture::connection_seen& c) {
   return c.general == cip::code(cip::general_status::connection_failure) && !c.additional.empty() ? c.additional[0] : 0;
+}
+
+// [Device] as the identity a device built from the EDS reports.
+cip::identity identity_of(const model::device& dev) {
+  cip::identity id;
+  if (const auto k = connections::key_from_device(dev)) {
+    id.vendor = k->vendor;
+    id.device_type = k->device_type;
+    id.product_code = k->product_code;
+    id.major = k->major;
+    id.minor = k->minor;
+  }
+  return id;
+}
+
+std::string key_words(const cip::electronic_key& k, const std::optional<connections::refusal>& r) {
+  return fmt::format("vendor {}, device type {}, product code {}, revision {}.{}, {} keying: {}", k.vendor,
+                     k.device_type, k.product_code, k.major, k.minor, k.compatible ? "compatible" : "exact",
+                     r ? r->why : std::string("[Device] fits it"));
 }
 
 std::string ms_text(std::uint64_t us) { return fmt::format("{:.1f} ms", static_cast<double>(us) / 1000.0); }
@@ -158,9 +178,15 @@ void judge::connection(std::size_t eds, std::size_t ci) {
   const connections::connection_point* chosen = nullptr;
   const connections::connection_point* first = nullptr;
   std::optional<connections::refusal> first_fit;
+  // The key, when there is one, is held to [Device] first, as a device does.
+  std::optional<connections::refusal> key_fit;
+  if (sp && sp->key) {
+    key_fit = connections::check_key(identity_of(*view.file->dev), *sp->key);
+    v.keying = key_words(*sp->key, key_fit);
+  }
   for (const auto& p : view.served.points) {
     if (!sp || p.segments != sp->app) continue;
-    auto fit = connections::check_fit(view.file->dev, p, c.request, sp->config);
+    auto fit = key_fit ? key_fit : connections::check_fit(view.file->dev, p, c.request, sp->config);
     if (!fit) {
       chosen = &p;
       break;

@@ -57,6 +57,7 @@ void connection_lines(std::string& out, const capture::connection_seen& c, const
   out += fmt::format("): {}", v.outcome);
   if (c.refused()) out += fmt::format(": {}", cip::describe_status(c.general, c.additional));
   out += "\n";
+  if (!v.keying.empty()) out += fmt::format("    key: {}\n", v.keying);
   if (!v.fit.empty()) out += fmt::format("    not as the EDS describes: {}\n", v.fit);
   if (!c.granted) return;
   direction_line(out, "O->T", c.ot, c.granted->ot_api_us);

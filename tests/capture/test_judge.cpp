@@ -263,6 +263,28 @@ TEST(capture_judge, the_key_of_a_forward_open_picks_the_file) {
   EXPECT_EQ(v.devices[0].eds, 1U);
   EXPECT_EQ(v.devices[0].how, verify::matched_by::key);
   EXPECT_TRUE(v.findings.empty());
+  EXPECT_EQ(v.connections.at(0).keying,
+            "vendor 1, device type 12, product code 65001, revision 2.3, compatible keying: [Device] fits it");
+}
+
+// A key of another major revision: the device refused it (0x0116), and the
+// EDS's [Device] says why, at MajRev.
+TEST(capture_judge, a_key_the_eds_does_not_fit_is_judged_as_a_device_would) {
+  auto fo = open_request();
+  cip::bytes path;
+  cip::put_key(path, {1, 12, 65001, 3, 1, true});
+  path.insert(path.end(), fo.path.begin(), fo.path.end());
+  fo.path = path;
+  tracker t;
+  t.add(open_with(1, fo));
+  t.add(refusal(2, {0x0116}));
+  const auto j = judge(t);
+  EXPECT_EQ(j.where(), std::vector<std::string>{"13:10 capture-forward-open"});  // MajRev = 2
+  EXPECT_NE(j.message().find("the key's revision 3.1 (compatible keying) does not fit [Device]'s 2.3"),
+            std::string::npos)
+      << j.message();
+  EXPECT_NE(j.verdict.connections.at(0).keying.find("compatible keying: the key's revision 3.1"), std::string::npos)
+      << j.verdict.connections.at(0).keying;
 }
 
 }  // namespace
