@@ -43,26 +43,35 @@ class loopback_tcpdump {
       ::_exit(127);
     }
     ::close(err[1]);
-    // Ready once it says it listens.
+    err_ = err[0];
+    // Ready once it has said it listens, the whole line: tcpdump writes it in
+    // pieces, and the pipe stays open until it ends, since a write to a
+    // closed pipe would kill it there.
     std::string said;
     char c;
-    while (said.find("listening on") == std::string::npos && ::read(err[0], &c, 1) == 1) said += c;
-    ::close(err[0]);
-    ready_ = said.find("listening on") != std::string::npos;
+    while (!said.ends_with('\n') || said.find("listening on") == std::string::npos) {
+      if (::read(err_, &c, 1) != 1) break;
+      said += c;
+    }
+    ready_ = said.find("listening on") != std::string::npos && said.ends_with('\n');
   }
   ~loopback_tcpdump() { stop(); }
   loopback_tcpdump(const loopback_tcpdump&) = delete;
   loopback_tcpdump& operator=(const loopback_tcpdump&) = delete;
   [[nodiscard]] bool ready() const { return ready_; }
   void stop() {
-    if (pid_ <= 0) return;
-    ::kill(pid_, SIGTERM);
-    ::waitpid(pid_, nullptr, 0);
+    if (pid_ > 0) {
+      ::kill(pid_, SIGTERM);
+      ::waitpid(pid_, nullptr, 0);
+    }
+    if (err_ >= 0) ::close(err_);
     pid_ = -1;
+    err_ = -1;
   }
 
  private:
   pid_t pid_ = -1;
+  int err_ = -1;
   bool ready_ = false;
 };
 
