@@ -1,6 +1,7 @@
 #pragma once
 // One record of a capture file, as the reader hands it on: the bytes stay
 // the source's until its next read.
+#include <algorithm>
 #include <cstdint>
 #include <span>
 
@@ -10,7 +11,13 @@ namespace edsc::capture {
 struct timestamp {
   std::int64_t sec = 0;
   std::uint32_t nsec = 0;
-  [[nodiscard]] std::int64_t total_ns() const { return sec * 1'000'000'000 + nsec; }
+  // A pcapng file's 64-bit timestamps reach far past what nanoseconds in 64
+  // bits hold; such a time is held at 2^32 s (the year 2106, the end of a
+  // pcap file's own field), so the difference of two times always fits.
+  static constexpr std::int64_t max_sec = std::int64_t{1} << 32;
+  [[nodiscard]] std::int64_t total_ns() const {
+    return std::clamp(sec, -max_sec, max_sec) * 1'000'000'000 + std::min<std::uint32_t>(nsec, 999'999'999);
+  }
 };
 
 struct frame {

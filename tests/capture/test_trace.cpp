@@ -5,6 +5,8 @@
 // feeds it captures of real sessions that tshark decodes too.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "capture/trace.hpp"
 #include "cip/device_reply.hpp"
 #include "cip/message.hpp"
@@ -210,6 +212,16 @@ TEST(capture_trace, limits_bound_what_is_kept) {
   EXPECT_EQ(t.connections().size(), 2U);
   EXPECT_EQ(t.problems().size(), 1U);
   EXPECT_EQ(t.over_limits(), 4U);
+}
+
+// pcapng stamps in 64 bits of any unit: a time past 2^32 s is held there, so
+// nanoseconds and their differences fit in 64 bits.
+TEST(capture_timestamp, a_time_past_what_nanoseconds_hold_is_held_at_2_to_the_32_seconds) {
+  constexpr std::int64_t held = (std::int64_t{1} << 32) * 1'000'000'000;
+  EXPECT_EQ((timestamp{std::numeric_limits<std::int64_t>::max(), 0}.total_ns()), held);
+  EXPECT_EQ((timestamp{std::numeric_limits<std::int64_t>::min(), 0}.total_ns()), -held);
+  EXPECT_EQ((timestamp{5, 250}.total_ns()), 5'000'000'250);
+  EXPECT_EQ((timestamp{0, 4'000'000'000U}.total_ns()), 999'999'999);  // nanoseconds past a second are cut
 }
 
 TEST(capture_interval_histogram, exact_below_128_us_then_within_one_percent) {
