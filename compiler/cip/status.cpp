@@ -48,4 +48,14 @@ std::string describe_identity_status(std::uint16_t status) {
   return words.empty() ? out : fmt::format("{} ({})", out, words);
 }
 
+const char* busy_reason(std::uint8_t general, std::uint16_t extended) {
+  if (general != code(general_status::connection_failure)) return nullptr;
+  switch (extended_status{extended}) {
+    case extended_status::connection_in_use: return "a connection with the same identity is already open";
+    case extended_status::ownership_conflict: return "another scanner owns what it connects to";
+    case extended_status::out_of_connections: return "the device has no connection free";
+    default: return nullptr;
+  }
+}
+
 }  // namespace edsc::cip

@@ -201,18 +201,6 @@ struct checker {
     return site ? fmt::format("{}: {}", status, site->words) : status;
   }
 
-  // A refusal that is the device's state, not the EDS's fault: another
-  // scanner holds what the connection needs.
-  static const char* busy_reason(std::uint8_t general, std::uint16_t ext) {
-    if (general != cip::code(cip::general_status::connection_failure)) return nullptr;
-    switch (extended{ext}) {
-      case extended::connection_in_use: return "a connection with the same identity is already open";
-      case extended::ownership_conflict: return "another scanner owns what it connects to";
-      case extended::out_of_connections: return "the device has no connection free";
-      default: return nullptr;
-    }
-  }
-
   void connections() {
     const auto plans = plan_connections(dev);
     for (std::size_t i = 0; i < plans.size(); ++i) {
@@ -238,7 +226,7 @@ struct checker {
                const std::string& sizes) {
     const std::uint16_t ext =
         o.general == cip::code(cip::general_status::connection_failure) && !o.additional.empty() ? o.additional[0] : 0;
-    if (const auto* why = busy_reason(o.general, ext)) {
+    if (const auto* why = cip::busy_reason(o.general, ext)) {
       row(name, sizes, fmt::format("busy 0x{:02X}/0x{:04X}", o.general, ext), verdict::not_tried);
       out.rows.back().refused = std::pair<int, int>{o.general, ext};
       out.busy.push_back(

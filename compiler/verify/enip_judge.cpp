@@ -51,16 +51,6 @@ std::optional<split_path> split(const cip::forward_open_request& fo) {
   return out;
 }
 
-const char* busy_reason(std::uint8_t general, std::uint16_t ext_code) {
-  if (general != cip::code(cip::general_status::connection_failure)) return nullptr;
-  switch (ext{ext_code}) {
-    case ext::connection_in_use: return "a connection with the same identity is already open";
-    case ext::ownership_conflict: return "another scanner owns what it connects to";
-    case ext::out_of_connections: return "the device has no connection free";
-    default: return nullptr;
-  }
-}
-
 std::uint16_t extended_of(const capture::connection_seen& c) {
   return c.general == cip::code(cip::general_status::connection_failure) && !c.additional.empty() ? c.additional[0] : 0;
 }
@@ -236,7 +226,7 @@ void judge::against(std::size_t eds, const capture::connection_seen& c, const co
 void judge::refused_though_fit(std::size_t eds, const capture::connection_seen& c,
                                const connections::connection_point& p) {
   const auto e = extended_of(c);
-  if (busy_reason(c.general, e) != nullptr) return;  // the device's state, not the EDS's: the timeline says it
+  if (cip::busy_reason(c.general, e) != nullptr) return;  // the device's state, not the EDS's: the timeline says it
   std::optional<std::uint16_t> accepted;
   if (connections::takes_accepted_size(ext{e}) && c.additional.size() > 1) accepted = c.additional[1];
   add(eds, diag_id::capture_refused, e != 0 ? site(eds, p.number, ext{e}, accepted) : site(eds, p.number, ext{}),

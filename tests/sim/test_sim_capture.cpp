@@ -14,6 +14,7 @@
 #include <sstream>
 #include <thread>
 
+#include "capture/tshark_tools.hpp"
 #include "sim_eds.hpp"
 #include "sim_network.hpp"
 
@@ -42,15 +43,7 @@ Connection1 = 0x04010002,0x44640405,Param1,)eds" +
 )eds");
 }
 
-std::string shell_out(const std::string& command) {
-  std::string out;
-  FILE* p = ::popen(command.c_str(), "r");
-  if (p == nullptr) return out;
-  char buf[4096];
-  while (const std::size_t n = std::fread(buf, 1, sizeof buf, p)) out.append(buf, n);
-  ::pclose(p);
-  return out;
-}
+using capture::test::run;  // a command's standard output
 
 // tcpdump writes what it read a little after the wire carried it: wait until
 // the file stops growing (the Forward_Close was the last thing sent; the
@@ -84,52 +77,54 @@ struct session {
   int verify_status = -1;
 };
 
-// The simulator serves `served`; the scanner side is configured from
-// `scanner` (the same file unless a fault is asked for); tcpdump records it.
-std::optional<session> record(test_network& net, const std::string& served, const std::string& scanner) {
+// The simulator serving `served` and tcpdump on its interface; the pids of
+// both, or none after saying why.
+struct recording {
   session s;
-  s.eds = net.dir + "/device.eds";
-  std::ofstream(s.eds) << served;
-  const auto scanner_eds = net.dir + "/scanner.eds";
-  std::ofstream(scanner_eds) << scanner;
+  pid_t sim = -1, dump = -1;
+};
+std::optional<recording> start_recording(test_network& net, const std::string& served) {
+  recording r;
+  r.s.eds = net.dir + "/device.eds";
+  std::ofstream(r.s.eds) << served;
   std::string why;
-  if (start_sim(net, s.eds, why) <= 0) {
+  r.sim = start_sim(net, r.s.eds, why);
+  if (r.sim <= 0) {
     ADD_FAILURE() << why;
     return std::nullopt;
   }
-  s.pcap = net.dir + "/session.pcap";
-  const auto dump = net.capture(s.pcap);
-  if (dump <= 0) {
+  r.s.pcap = net.dir + "/session.pcap";
+  r.dump = net.capture(r.s.pcap);
+  if (r.dump <= 0) {
     ADD_FAILURE() << "tcpdump did not start";
     return std::nullopt;
   }
-  const auto r = run_edsc("verify --live " + net.device_ip + " " + quoted(scanner_eds) +
+  return r;
+}
+
+// The simulator serves `served`; the scanner side is configured from
+// `scanner` (the same file unless a fault is asked for); tcpdump records it.
+std::optional<session> record(test_network& net, const std::string& served, const std::string& scanner) {
+  auto r = start_recording(net, served);
+  if (!r) return std::nullopt;
+  const auto scanner_eds = net.dir + "/scanner.eds";
+  std::ofstream(scanner_eds) << scanner;
+  const auto v = run_edsc("verify --live " + net.device_ip + " " + quoted(scanner_eds) +
                           " --connections --watch 0.4 --color never");
-  s.verify_status = r.status;
-  s.verify_output = r.output;
-  settle(s.pcap);
-  net.stop(dump, SIGINT);
-  return s;
+  r->s.verify_status = v.status;
+  r->s.verify_output = v.output;
+  settle(r->s.pcap);
+  net.stop(r->dump, SIGINT);
+  return r->s;
 }
 
 // A session whose device is hurt once the connection is open: `signal`
 // sent to the simulator (SIGSTOP, continued after `stopped`; SIGKILL).
 std::optional<session> record_hurt(test_network& net, int signal, std::chrono::milliseconds stopped) {
-  session s;
-  s.eds = net.dir + "/device.eds";
-  std::ofstream(s.eds) << device_eds();
-  std::string why;
-  const auto sim = start_sim(net, s.eds, why);
-  if (sim <= 0) {
-    ADD_FAILURE() << why;
-    return std::nullopt;
-  }
-  s.pcap = net.dir + "/session.pcap";
-  const auto dump = net.capture(s.pcap);
-  if (dump <= 0) {
-    ADD_FAILURE() << "tcpdump did not start";
-    return std::nullopt;
-  }
+  auto r = start_recording(net, device_eds());
+  if (!r) return std::nullopt;
+  auto& s = r->s;
+  const auto sim = r->sim, dump = r->dump;
   std::thread scanner([&] {
     const auto r = run_edsc("verify --live " + net.device_ip + " " + live_test::quoted(s.eds) +
                             " --connections --watch 3 --timeout 1 --color never");
@@ -157,9 +152,9 @@ std::optional<session> record_hurt(test_network& net, int signal, std::chrono::m
 // The largest gap between the T->O frames of connection `id`, in
 // microseconds, by tshark's timestamps.
 std::uint64_t tshark_worst_gap_us(const std::string& pcap, std::uint32_t id) {
-  std::istringstream lines(shell_out("tshark -r " + live_test::quoted(pcap) + " -Y " +
-                                     live_test::quoted("enip.cpf.sai.connid == " + std::to_string(id)) +
-                                     " -T fields -e frame.time_epoch 2>/dev/null"));
+  std::istringstream lines(run("tshark -r " + live_test::quoted(pcap) + " -Y " +
+                               live_test::quoted("enip.cpf.sai.connid == " + std::to_string(id)) +
+                               " -T fields -e frame.time_epoch 2>/dev/null"));
   std::uint64_t worst = 0, last = 0;
   for (std::string t; lines >> t;) {
     // seconds.nanoseconds, as text: no rounding through a double
@@ -174,8 +169,7 @@ std::uint64_t tshark_worst_gap_us(const std::string& pcap, std::uint32_t id) {
 
 // `edsc ARGS` with its standard output alone, and its exit status.
 std::pair<int, std::string> edsc_stdout(const std::string& args) {
-  const auto out =
-      shell_out("timeout -s KILL 120 " + quoted(EDSC_BINARY) + " " + args + " 2>/dev/null; echo \"#exit $?\"");
+  const auto out = run("timeout -s KILL 120 " + quoted(EDSC_BINARY) + " " + args + " 2>/dev/null; echo \"#exit $?\"");
   const auto at = out.rfind("#exit ");
   if (at == std::string::npos) return {-1, out};
   return {std::stoi(out.substr(at + 6)), out.substr(0, at)};
@@ -184,7 +178,7 @@ std::pair<int, std::string> edsc_stdout(const std::string& args) {
 // The frame numbers tshark shows for a display filter, one per line.
 std::vector<unsigned> tshark_frames(const std::string& pcap, const std::string& filter) {
   std::istringstream lines(
-      shell_out("tshark -r " + quoted(pcap) + " -Y " + quoted(filter) + " -T fields -e frame.number 2>/dev/null"));
+      run("tshark -r " + quoted(pcap) + " -Y " + quoted(filter) + " -T fields -e frame.number 2>/dev/null"));
   std::vector<unsigned> out;
   for (unsigned n; lines >> n;) out.push_back(n);
   return out;
