@@ -74,6 +74,17 @@ std::string key_words(const cip::electronic_key& k, const std::optional<connecti
                      r ? r->why : std::string("[Device] fits it"));
 }
 
+// The first [Device] field a device's identity differs in, as a scanner
+// compares them: vendor, device type, product code, major revision.
+span first_difference(const model::device& dev, const cip::identity& id) {
+  const auto& i = dev.identity;
+  const auto k = connections::key_from_device(dev).value_or(cip::electronic_key{});
+  if (k.vendor != id.vendor) return i.vend_code.from.where;
+  if (k.device_type != id.device_type) return i.prod_type.from.where;
+  if (k.product_code != id.product_code) return i.prod_code.from.where;
+  return i.maj_rev.from.where;
+}
+
 std::string ms_text(std::uint64_t us) { return fmt::format("{:.1f} ms", static_cast<double>(us) / 1000.0); }
 
 }  // namespace
@@ -116,7 +127,7 @@ class judge {
   void identity_mismatch(const capture_device& d) {
     const auto& dev = *files_[0].dev;
     const auto& id = *d.identity;
-    add(0, diag_id::capture_identity, dev.identity.prod_code.from.where,
+    add(0, diag_id::capture_identity, first_difference(dev, id),
         fmt::format("frame {}: {} says it is vendor {}, device type {}, product code {}, revision {}.{} (\"{}\"): "
                     "not the device this EDS describes; its connections are not judged against it",
                     d.identity_frame, address_text(d.address), id.vendor, id.device_type, id.product_code, id.major,

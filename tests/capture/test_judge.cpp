@@ -242,6 +242,15 @@ TEST(capture_judge, a_device_that_says_it_is_another_product_is_an_error_and_not
             std::string::npos)
       << j.message();
   EXPECT_FALSE(j.verdict.devices[0].eds.has_value());
+
+  // Another major revision of the same product: located at MajRev.
+  id.product_code = 65001;
+  id.major = 3;
+  tracker other;
+  other.add(at(1, 0, {0xC0A80002, 44818}, {0xC0A80001, 50001},
+               cip::encode_encap(cip::command::list_identity, 0, {}, cip::list_identity_reply(id)).value(),
+               transport::udp));
+  EXPECT_EQ(judge(other).where(), std::vector<std::string>{"13:10 capture-identity"});
 }
 
 TEST(capture_judge, the_key_of_a_forward_open_picks_the_file) {
