@@ -73,7 +73,8 @@ std::optional<read_capture> read(const std::string& path) {
   for (;;) {
     auto m = r->next();
     if (!m) {
-      out.error = m.error().message;
+      out.error =
+          m.error().frame > 0 ? fmt::format("frame {}: {}", m.error().frame, m.error().message) : m.error().message;
       break;
     }
     if (!m->has_value()) break;
