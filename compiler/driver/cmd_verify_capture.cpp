@@ -123,11 +123,20 @@ json connection_json(const capture::connection_seen& c, const verify::connection
             {"keying", v.keying},
             {"serial", c.request.connection_serial},
             {"originator_vendor", c.request.originator_vendor},
-            {"originator_serial", c.request.originator_serial}};
+            {"originator_serial", c.request.originator_serial},
+            {"large", c.large},
+            {"timeout_multiplier", c.request.timeout_multiplier},
+            {"ot_rpi_us", c.request.ot_rpi_us},
+            {"to_rpi_us", c.request.to_rpi_us},
+            {"ot_size", c.request.ot.size},
+            {"to_size", c.request.to.size},
+            {"transport", c.request.transport}};
   if (c.refused()) j["refused"] = {{"general", c.general}, {"additional", c.additional}};
   if (c.granted) {
     j["ot_connection_id"] = c.granted->ot_connection_id;
     j["to_connection_id"] = c.granted->to_connection_id;
+    j["ot_api_us"] = c.granted->ot_api_us;
+    j["to_api_us"] = c.granted->to_api_us;
     j["ot"] = direction_json(c.ot);
     j["to"] = direction_json(c.to);
   }

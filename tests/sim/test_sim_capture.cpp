@@ -5,6 +5,7 @@
 // the same connection ids, the same frame counts per connection.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
 #include <chrono>
 #include <csignal>
 #include <filesystem>
@@ -225,6 +226,24 @@ TEST_F(sim_capture, a_session_is_judged_as_tshark_decodes_it) {
   EXPECT_EQ(tshark_frames(s->pcap, "cip.service == 0x54"), std::vector<unsigned>{c["request_frame"].get<unsigned>()});
   EXPECT_EQ(tshark_frames(s->pcap, "cip.service == 0xd4"), std::vector<unsigned>{c["reply_frame"].get<unsigned>()});
   EXPECT_EQ(tshark_frames(s->pcap, "cip.service == 0x4e"), std::vector<unsigned>{c["close_frame"].get<unsigned>()});
+  // The same Forward_Open fields and granted reply as tshark decodes them
+  // (tshark shows serial numbers and ids in hex).
+  const auto fo = run("tshark -r " + quoted(s->pcap) +
+                      " -Y 'cip.service == 0x54' -T fields -E separator=: -e cip.cm.conn_serial_num -e cip.cm.vendor "
+                      "-e cip.cm.orig_serial_num -e cip.cm.timeout_multiplier -e cip.cm.otrpi -e cip.cm.torpi "
+                      "-e cip.cm.fwo.consize 2>/dev/null");
+  const auto ours_fo =
+      fmt::format("0x{:04x}:0x{:04x}:0x{:08x}:{}:{}:{}:{},{}\n", c["serial"].get<unsigned>(),
+                  c["originator_vendor"].get<unsigned>(), c["originator_serial"].get<unsigned>(),
+                  c["timeout_multiplier"].get<unsigned>(), c["ot_rpi_us"].get<unsigned>(),
+                  c["to_rpi_us"].get<unsigned>(), c["ot_size"].get<unsigned>(), c["to_size"].get<unsigned>());
+  EXPECT_EQ(fo, ours_fo);
+  const auto reply = run("tshark -r " + quoted(s->pcap) +
+                         " -Y 'cip.service == 0xd4' -T fields -E separator=: -e cip.cm.ot_connid -e cip.cm.to_connid "
+                         "-e cip.cm.otapi -e cip.cm.toapi 2>/dev/null");
+  EXPECT_EQ(reply, fmt::format("0x{:08x}:0x{:08x}:{}:{}\n", c["ot_connection_id"].get<std::uint32_t>(),
+                               c["to_connection_id"].get<std::uint32_t>(), c["ot_api_us"].get<unsigned>(),
+                               c["to_api_us"].get<unsigned>()));
   // The same frame counts per connection id, each direction.
   for (const char* dir : {"ot", "to"}) {
     const auto id = c[std::string(dir) + "_connection_id"].get<std::uint32_t>();
