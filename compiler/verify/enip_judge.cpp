@@ -291,7 +291,10 @@ void judge::direction(std::size_t eds, const capture::connection_seen& c, const 
 // instance N, attribute 1) held to the parameter's type, limits and EnumN.
 void judge::writes() {
   for (const auto& w : t_.writes()) {
-    if (w.class_id != cip::code(cip::class_id::parameter) || w.attribute.value_or(1) != 1) continue;
+    // Set_Attributes_All carries every settable attribute, not the value alone.
+    if (w.class_id != cip::code(cip::class_id::parameter) || w.attribute != 1u ||
+        w.service != cip::code(cip::service::set_attribute_single))
+      continue;
     const capture_device* d = nullptr;
     for (const auto& x : out_.devices)
       if (x.address == w.target.address && x.eds) d = &x;

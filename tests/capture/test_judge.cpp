@@ -219,6 +219,13 @@ TEST(capture_judge, a_write_outside_a_parameter_s_limits_is_a_warning_at_the_lim
   EXPECT_EQ(j.where(), std::vector<std::string>{"20:44 capture-write-limits"});  // Param2's maximum
   EXPECT_NE(j.message().find("frame 20: 192.168.0.1 writes 250 to Param2"), std::string::npos) << j.message();
   EXPECT_NE(j.message().find("the device answered 0x00"), std::string::npos) << j.message();
+
+  // Set_Attributes_All carries every settable attribute: not the value alone, not judged as one.
+  tracker all;
+  clean_session(all);
+  all.add(at(20, ms(200), scanner, device,
+             rr(cip::encode_request(cip::service::set_attributes_all, cip::logical_path(0x0F, 2), value).value())));
+  EXPECT_TRUE(judge(all).verdict.findings.empty());
 }
 
 TEST(capture_judge, a_device_that_says_it_is_another_product_is_an_error_and_not_judged_further) {
