@@ -52,6 +52,13 @@ void tracker::problem(const message& m, std::string what) {
     ++over_limits_;
 }
 
+// Scanners ask ListIdentity again and again: past a limit the answers are
+// counted, not kept, so a long capture's memory stays bounded.
+void tracker::identity(const message& m, cip::identity id) {
+  if (identities_.size() >= limits_.max_identities) return void(++over_limits_);
+  identities_.push_back({m.source.address, std::move(id), m.frame});
+}
+
 void tracker::encapsulation(const message& m) {
   const cip::byte_view b = m.payload;
   auto h = cip::decode_encap_header(b);
@@ -63,7 +70,7 @@ void tracker::encapsulation(const message& m) {
   if (cmd == cip::command::list_identity && !data.empty()) {
     auto ids = cip::decode_list_identity(data, header);
     if (!ids) return problem(m, fmt::format("ListIdentity reply: {}", ids.error().what));
-    for (auto& id : *ids) identities_.push_back({m.source.address, std::move(id), m.frame});
+    for (auto& id : *ids) identity(m, std::move(id));
     return;
   }
   if (cmd != cip::command::send_rr_data) return;  // sessions, ListServices: nothing to judge
@@ -143,7 +150,7 @@ void tracker::reply(const message& m, const cip::encap_header& h, cip::byte_view
       if (r->general != 0) return;
       auto id = cip::decode_identity_all(r->data, base + 4 + 2 * r->additional.size());
       if (!id) return problem(m, fmt::format("Identity Get_Attributes_All reply: {}", id.error().what));
-      identities_.push_back({m.source.address, std::move(*id), m.frame});
+      identity(m, std::move(*id));
       return;
     }
   }

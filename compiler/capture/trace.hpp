@@ -92,6 +92,7 @@ struct undecodable {
 
 struct trace_limits {
   std::size_t max_connections = 4096;
+  std::size_t max_identities = 4096;
   std::size_t max_pending_requests = 1024;
   std::size_t max_writes = 4096;
   std::size_t max_undecodable = 256;
@@ -119,6 +120,7 @@ class tracker {
 
  private:
   void encapsulation(const message& m);
+  void identity(const message& m, cip::identity id);
   void request(const message& m, const cip::encap_header& h, cip::byte_view cip);
   void reply(const message& m, const cip::encap_header& h, cip::byte_view cip);
   void io(const message& m);

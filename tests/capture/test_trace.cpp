@@ -212,6 +212,17 @@ TEST(capture_trace, limits_bound_what_is_kept) {
   EXPECT_EQ(t.connections().size(), 2U);
   EXPECT_EQ(t.problems().size(), 1U);
   EXPECT_EQ(t.over_limits(), 4U);
+
+  // ListIdentity asked again and again: past the limit, answers are counted.
+  trace_limits few;
+  few.max_identities = 3;
+  tracker asked(few);
+  cip::identity id;
+  id.product_name = "x";
+  const auto reply = cip::encode_encap(cip::command::list_identity, 0, {}, cip::list_identity_reply(id)).value();
+  for (std::uint64_t f = 1; f <= 1000; ++f) asked.add(at(f, 0, device, scanner, reply, transport::udp));
+  EXPECT_EQ(asked.identities().size(), 3U);
+  EXPECT_EQ(asked.over_limits(), 997U);
 }
 
 // pcapng stamps in 64 bits of any unit: a time past 2^32 s is held there, so
