@@ -106,7 +106,7 @@ class judge {
   capture_verdict run() {
     out_.devices = find_devices(t_, files_);
     for (const auto& d : out_.devices) device(d);
-    writes();
+    for (auto& f : judge_writes(t_, out_.devices, files_)) out_.findings.push_back(std::move(f));
     return std::move(out_);
   }
 
@@ -147,7 +147,6 @@ class judge {
   void refused_though_fit(std::size_t eds, const capture::connection_seen& c, const connections::connection_point& p);
   void io(std::size_t eds, const capture::connection_seen& c, const connections::connection_point& p);
   void direction(std::size_t eds, const capture::connection_seen& c, const connections::connection_point& p, bool ot);
-  void writes();
   [[nodiscard]] span rpi_field(std::size_t eds, const connections::connection_point& p, bool ot) const {
     const auto& v = ot ? p.plan.conn->ot_rpi : p.plan.conn->to_rpi;
     return v.present() && !v.from.where.empty() ? v.from.where : views_[eds].setting(p.number)->at;
@@ -285,42 +284,6 @@ void judge::direction(std::size_t eds, const capture::connection_seen& c, const 
                     "device granted {}",
                     p.number, dir, ms_text(median), ms_text(d.intervals.quantile(0.99)), ms_text(d.intervals.worst()),
                     d.intervals.worst_frame(), ms_text(api)));
-}
-
-// A ParamN's value written through the Parameter object (class 0x0F,
-// instance N, attribute 1) held to the parameter's type, limits and EnumN.
-void judge::writes() {
-  for (const auto& w : t_.writes()) {
-    // Set_Attributes_All carries every settable attribute, not the value alone.
-    if (w.class_id != cip::code(cip::class_id::parameter) || w.attribute != 1u ||
-        w.service != cip::code(cip::service::set_attribute_single))
-      continue;
-    const capture_device* d = nullptr;
-    for (const auto& x : out_.devices)
-      if (x.address == w.target.address && x.eds) d = &x;
-    if (d == nullptr) continue;
-    const auto& dev = *files_[*d->eds].dev;
-    for (std::size_t i = 0; i < dev.params.size(); ++i) {
-      const auto& p = dev.params[i];
-      if (p.kind != model::param_kind::param || p.number != w.instance || p.type == nullptr) continue;
-      const auto size = std::size_t{p.type->size};
-      if (w.data.size() != size || size == 0 || size > 8) break;
-      connections::data_field f;
-      f.param = p.number;
-      f.param_index = static_cast<std::uint32_t>(i);
-      f.bits = static_cast<std::uint32_t>(size * 8);
-      f.is_signed = p.type->cls == schema::type_class::signed_int;
-      f.is_real = p.type->cls == schema::type_class::real;
-      const auto value = connections::decode_field(f, connections::get_bits(w.data, 0, f.bits));
-      if (auto ok = connections::check_value(dev, p, value); !ok)
-        add(*d->eds, diag_id::capture_write_limits, ok.error().at.empty() ? p.from.where : ok.error().at,
-            fmt::format("frame {}: {} writes {} to Param{}: {}; {}", w.frame, address_text(w.originator.address),
-                        connections::number_text(value), p.number, ok.error().why,
-                        w.reply_general ? fmt::format("the device answered 0x{:02X}", *w.reply_general)
-                                        : std::string("the capture holds no reply")));
-      break;
-    }
-  }
 }
 
 }  // namespace

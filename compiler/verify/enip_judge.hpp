@@ -1,6 +1,6 @@
 #pragma once
-// Internal to the capture judge: the pieces enip_match.cpp, enip_judge.cpp
-// and enip_timeline.cpp share.
+// Internal to the capture judge: the pieces enip_match.cpp, enip_judge.cpp,
+// enip_writes.cpp and enip_timeline.cpp share.
 #include <optional>
 #include <span>
 #include <vector>
@@ -16,5 +16,11 @@ namespace edsc::verify {
 
 // The electronic key segment of a Forward_Open's path, if it has one.
 [[nodiscard]] std::optional<cip::electronic_key> key_in(const cip::forward_open_request& fo);
+
+// The explicit writes that set a parameter of a matched device to a value
+// outside its EDS's limits (capture-write-limits).
+[[nodiscard]] std::vector<capture_finding> judge_writes(const capture::tracker& t,
+                                                        std::span<const capture_device> devices,
+                                                        std::span<const capture_eds> files);
 
 }  // namespace edsc::verify

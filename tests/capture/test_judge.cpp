@@ -60,10 +60,10 @@ struct judged {
   [[nodiscard]] std::string message(std::size_t i = 0) const { return verdict.findings.at(i).d.message; }
 };
 
-judged judge(tracker& t, std::int64_t end_ns = ms(1000)) {
+judged judge(tracker& t, std::int64_t end_ns = ms(1000), const std::string& eds = judge_eds) {
   t.finish(end_ns);
   judged j;
-  j.eds = edit::analyze("judge.eds", judge_eds);
+  j.eds = edit::analyze("judge.eds", eds);
   EXPECT_FALSE(j.eds->has_syntax_errors());
   const verify::capture_eds files[] = {{&j.eds->dev, j.eds->source.get()}};
   j.verdict = verify::judge_capture(t, files);
@@ -226,6 +226,53 @@ TEST(capture_judge, a_write_outside_a_parameter_s_limits_is_a_warning_at_the_lim
   all.add(at(20, ms(200), scanner, device,
              rr(cip::encode_request(cip::service::set_attributes_all, cip::logical_path(0x0F, 2), value).value())));
   EXPECT_TRUE(judge(all).verdict.findings.empty());
+}
+
+// judge_eds with `params` after Param2 (line 21 on).
+std::string with_params(const std::string& params) {
+  std::string eds = judge_eds;
+  const auto at = eds.find("\n", eds.find("Param2 = ")) + 1;
+  return eds.insert(at, params);
+}
+
+// A write of `value` (one byte) to class 0x64, instance 1, `attribute`, with
+// a successful reply, after a clean session.
+judged write_to_link(std::uint32_t attribute, std::uint8_t value, const std::string& params) {
+  tracker t;
+  clean_session(t);
+  const cip::bytes data{value};
+  t.add(at(20, ms(200), scanner, device,
+           rr(cip::encode_request(cip::service::set_attribute_single, cip::logical_path(0x64, 1, attribute), data)
+                  .value())));
+  t.add(at(21, ms(201), device, scanner,
+           rr(cip::encode_reply(cip::service::set_attribute_single, cip::general_status::success))));
+  return judge(t, ms(1000), with_params(params));
+}
+
+// A parameter's link path names the attribute its value lives in: a write
+// there is judged as a write through the Parameter object is.
+TEST(capture_judge, a_write_at_a_parameter_s_link_path_is_judged_against_its_limits) {
+  const std::string param3 = "Param3 = 0,6,\"20 64 24 01 30 05\",0x0000,0xC6,1,\"Gain\",\"\",\"\",0,10,5,,,,,,,,,;\n";
+  const auto j = write_to_link(5, 20, param3);
+  ASSERT_EQ(j.verdict.findings.size(), 1U);
+  EXPECT_EQ(j.where(), std::vector<std::string>{"21:63 capture-write-limits"});  // Param3's maximum
+  EXPECT_NE(j.message().find("frame 20: 192.168.0.1 writes 20 to Param3 (its link path: class 0x64, instance 1, "
+                             "attribute 5): "),
+            std::string::npos)
+      << j.message();
+  EXPECT_TRUE(write_to_link(5, 10, param3).verdict.findings.empty());  // the maximum itself
+  EXPECT_TRUE(write_to_link(6, 20, param3).verdict.findings.empty());  // another attribute
+
+  // Two views of one attribute: a value either allows is not a finding.
+  const std::string param4 = "Param4 = 0,6,\"20 64 24 01 30 05\",0x0000,0xC6,1,\"Gain\",\"\",\"\",0,50,5,,,,,,,,,;\n";
+  EXPECT_TRUE(write_to_link(5, 20, param3 + param4).verdict.findings.empty());
+  EXPECT_EQ(write_to_link(5, 60, param3 + param4).where(), std::vector<std::string>{"21:63 capture-write-limits"});
+
+  // A link path that routes through a port names an object of another
+  // module, not of the device written to.
+  const std::string routed =
+      "Param3 = 0,8,\"01 00 20 64 24 01 30 05\",0x0000,0xC6,1,\"Gain\",\"\",\"\",0,10,5,,,,,,,,,;\n";
+  EXPECT_TRUE(write_to_link(5, 20, routed).verdict.findings.empty());
 }
 
 TEST(capture_judge, a_device_that_says_it_is_another_product_is_an_error_and_not_judged_further) {
