@@ -48,6 +48,10 @@ std::string describe_identity_status(std::uint16_t status) {
   return words.empty() ? out : fmt::format("{} ({})", out, words);
 }
 
+std::uint16_t extended_of(std::uint8_t general, std::span<const std::uint16_t> additional) {
+  return general == code(general_status::connection_failure) && !additional.empty() ? additional[0] : 0;
+}
+
 const char* busy_reason(std::uint8_t general, std::uint16_t extended) {
   if (general != code(general_status::connection_failure)) return nullptr;
   switch (extended_status{extended}) {

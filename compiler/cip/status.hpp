@@ -10,6 +10,10 @@ namespace edsc::cip {
 // "0x01 connection failure, extended 0x0127 invalid O->T size (additional 0x0026)".
 [[nodiscard]] std::string describe_status(std::uint8_t general, std::span<const std::uint16_t> additional);
 
+// The extended status of a Connection Manager failure (general 0x01): its
+// first additional word; 0 for any other reply.
+[[nodiscard]] std::uint16_t extended_of(std::uint8_t general, std::span<const std::uint16_t> additional);
+
 // Why a Connection Manager refusal is the device's state rather than its
 // description (another scanner holds what the connection needs, no
 // connection is free), in words; nullptr for any other status. verify --live

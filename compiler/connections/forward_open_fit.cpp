@@ -135,6 +135,34 @@ std::optional<refusal> check_config(const model::device& eds, const connection_p
 
 }  // namespace
 
+cip::decoded<connection_path_parts> split_connection_path(const cip::forward_open_request& fo) {
+  auto segs = cip::decode_path(fo.path, 0);
+  if (!segs) return segs.error();
+  connection_path_parts out;
+  for (const auto& s : *segs) {
+    if (s.type == cip::segment_type::key)
+      out.key = s.key;
+    else if (s.type == cip::segment_type::data)
+      out.config = s.data;
+    else
+      out.app.push_back(s);
+  }
+  return out;
+}
+
+cip::identity identity_from_eds(const model::device& dev) {
+  const auto number = [](const model::value& v) { return v.is_integer() ? v.as_uint() : 0; };
+  const auto& m = dev.identity;
+  cip::identity id;
+  id.vendor = static_cast<std::uint16_t>(number(m.vend_code));
+  id.device_type = static_cast<std::uint16_t>(number(m.prod_type));
+  id.product_code = static_cast<std::uint16_t>(number(m.prod_code));
+  id.major = static_cast<std::uint8_t>(number(m.maj_rev));
+  id.minor = static_cast<std::uint8_t>(number(m.min_rev));
+  if (m.prod_name.ok()) id.product_name = std::string(m.prod_name.text);
+  return id;
+}
+
 std::string path_words(const std::vector<cip::path_segment>& app) {
   std::vector<std::string> words;
   for (const auto& sg : app) {

@@ -31,6 +31,19 @@ struct refusal {
   std::optional<std::uint16_t> bad_config_element = std::nullopt;
 };
 
+// A Forward_Open's connection path in its parts: the electronic key, the
+// data segment (configuration data), and the rest, the application path.
+struct connection_path_parts {
+  std::optional<cip::electronic_key> key;
+  std::optional<cip::byte_view> config;
+  std::vector<cip::path_segment> app;
+};
+[[nodiscard]] cip::decoded<connection_path_parts> split_connection_path(const cip::forward_open_request& fo);
+
+// [Device] as the identity a device built from the EDS reports (vendor,
+// device type, product code, revision, name); a field the file lacks is 0.
+[[nodiscard]] cip::identity identity_from_eds(const model::device& dev);
+
 // [Device] against the key: zero fields match anything; exact keying wants
 // the same major and minor, compatible keying the same major and a minor the
 // device reaches.

@@ -224,8 +224,7 @@ struct checker {
 
   void refused(const connection_plan& p, const connection_outcome& o, const std::string& name,
                const std::string& sizes) {
-    const std::uint16_t ext =
-        o.general == cip::code(cip::general_status::connection_failure) && !o.additional.empty() ? o.additional[0] : 0;
+    const std::uint16_t ext = cip::extended_of(o.general, o.additional);
     if (const auto* why = cip::busy_reason(o.general, ext)) {
       row(name, sizes, fmt::format("busy 0x{:02X}/0x{:04X}", o.general, ext), verdict::not_tried);
       out.rows.back().refused = std::pair<int, int>{o.general, ext};

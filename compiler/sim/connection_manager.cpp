@@ -43,25 +43,15 @@ std::string triple(const cip::forward_open_request& fo) {
                      fo.originator_vendor, fo.originator_serial);
 }
 
-// A Forward_Open's connection path split: the key checked, the data segment
-// (configuration) kept, the rest the application path.
-struct split_path {
-  std::vector<cip::path_segment> app;
-  std::optional<cip::byte_view> config;
-};
+using split_path = connections::connection_path_parts;
 
+// A Forward_Open's connection path split, its key checked first.
 std::optional<refusal> split(const state& s, const cip::forward_open_request& fo, split_path& out) {
-  auto segs = cip::decode_path(fo.path, 0);
-  if (!segs) return refusal{ext::invalid_segment_in_path, {}, "the connection path: " + segs.error().what};
-  for (const auto& sg : segs.value()) {
-    if (sg.type == cip::segment_type::key) {
-      if (auto r = check_key(s.dev.id, sg.key)) return r;
-    } else if (sg.type == cip::segment_type::data) {
-      out.config = sg.data;
-    } else {
-      out.app.push_back(sg);
-    }
-  }
+  auto parts = connections::split_connection_path(fo);
+  if (!parts) return refusal{ext::invalid_segment_in_path, {}, "the connection path: " + parts.error().what};
+  out = std::move(*parts);
+  if (out.key)
+    if (auto r = check_key(s.dev.id, *out.key)) return r;
   return std::nullopt;
 }
 

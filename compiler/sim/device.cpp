@@ -2,13 +2,11 @@
 
 #include <algorithm>
 
+#include "connections/forward_open_fit.hpp"
+
 namespace edsc::sim {
 
 namespace {
-
-std::uint32_t number_or_zero(const model::value& v) {
-  return v.is_integer() ? static_cast<std::uint32_t>(v.as_uint()) : 0;
-}
 
 void put_le(cip::bytes& b, std::uint64_t v, std::size_t n) {
   b.clear();
@@ -58,15 +56,9 @@ const assembly_instance* device::assembly(std::uint32_t instance) const {
 
 namespace {
 
-cip::identity identity_of(const model::device_info& m, std::uint32_t serial) {
-  cip::identity id;
-  id.vendor = static_cast<std::uint16_t>(number_or_zero(m.vend_code));
-  id.device_type = static_cast<std::uint16_t>(number_or_zero(m.prod_type));
-  id.product_code = static_cast<std::uint16_t>(number_or_zero(m.prod_code));
-  id.major = static_cast<std::uint8_t>(number_or_zero(m.maj_rev));
-  id.minor = static_cast<std::uint8_t>(number_or_zero(m.min_rev));
+cip::identity identity_of(const model::device& dev, std::uint32_t serial) {
+  auto id = connections::identity_from_eds(dev);
   id.serial = serial;
-  if (m.prod_name.ok()) id.product_name = std::string(m.prod_name.text);
   id.state = 3;  // operational
   id.sin_family = 2;
   id.sin_port = cip::enip_port;
@@ -91,7 +83,7 @@ void add_points(const model::device& dev, device& d) {
 device build_device(const model::device& dev, std::uint32_t serial) {
   device d;
   d.eds = &dev;
-  d.id = identity_of(dev.identity, serial);
+  d.id = identity_of(dev, serial);
   add_points(dev, d);
   for (const auto& t : connections::plan_assemblies(dev))
     add_assembly(d, t.instance, t.eds_size.value_or(0), assembly_role::other);

@@ -29,45 +29,6 @@ struct eds_view {
   }
 };
 
-// A Forward_Open's connection path split: key, configuration, application path.
-struct split_path {
-  std::optional<cip::electronic_key> key;
-  std::optional<cip::byte_view> config;
-  std::vector<cip::path_segment> app;
-};
-
-std::optional<split_path> split(const cip::forward_open_request& fo) {
-  auto segs = cip::decode_path(fo.path, 0);
-  if (!segs) return std::nullopt;
-  split_path out;
-  for (const auto& s : *segs) {
-    if (s.type == cip::segment_type::key)
-      out.key = s.key;
-    else if (s.type == cip::segment_type::data)
-      out.config = s.data;
-    else
-      out.app.push_back(s);
-  }
-  return out;
-}
-
-std::uint16_t extended_of(const capture::connection_seen& c) {
-  return c.general == cip::code(cip::general_status::connection_failure) && !c.additional.empty() ? c.additional[0] : 0;
-}
-
-// [Device] as the identity a device built from the EDS reports.
-cip::identity identity_of(const model::device& dev) {
-  cip::identity id;
-  if (const auto k = connections::key_from_device(dev)) {
-    id.vendor = k->vendor;
-    id.device_type = k->device_type;
-    id.product_code = k->product_code;
-    id.major = k->major;
-    id.minor = k->minor;
-  }
-  return id;
-}
-
 std::string key_words(const cip::electronic_key& k, const std::optional<connections::refusal>& r) {
   return fmt::format("vendor {}, device type {}, product code {}, revision {}.{}, {} keying: {}", k.vendor,
                      k.device_type, k.product_code, k.major, k.minor, k.compatible ? "compatible" : "exact",
@@ -138,7 +99,7 @@ class judge {
     const auto& c = t_.connections()[ci];
     if (c.reply_frame == 0) return "no reply";
     if (c.granted) return "open";
-    return fmt::format("refused 0x{:02X}/0x{:04X}", c.general, extended_of(c));
+    return fmt::format("refused 0x{:02X}/0x{:04X}", c.general, cip::extended_of(c.general, c.additional));
   }
 
   void connection(std::size_t eds, std::size_t ci);
@@ -173,7 +134,7 @@ span judge::site(std::size_t eds, std::uint32_t number, ext status, std::optiona
 void judge::connection(std::size_t eds, std::size_t ci) {
   const auto& c = t_.connections()[ci];
   connection_verdict v{ci, std::nullopt, outcome(ci), {}};
-  const auto sp = split(c.request);
+  const auto sp = connections::split_connection_path(c.request);
   const auto& view = views_[eds];
   const connections::connection_point* chosen = nullptr;
   const connections::connection_point* first = nullptr;
@@ -181,7 +142,7 @@ void judge::connection(std::size_t eds, std::size_t ci) {
   // The key, when there is one, is held to [Device] first, as a device does.
   std::optional<connections::refusal> key_fit;
   if (sp && sp->key) {
-    key_fit = connections::check_key(identity_of(*view.file->dev), *sp->key);
+    key_fit = connections::check_key(connections::identity_from_eds(*view.file->dev), *sp->key);
     v.keying = key_words(*sp->key, key_fit);
   }
   for (const auto& p : view.served.points) {
@@ -235,7 +196,7 @@ void judge::against(std::size_t eds, const capture::connection_seen& c, const co
 
 void judge::refused_though_fit(std::size_t eds, const capture::connection_seen& c,
                                const connections::connection_point& p) {
-  const auto e = extended_of(c);
+  const auto e = cip::extended_of(c.general, c.additional);
   if (cip::busy_reason(c.general, e) != nullptr) return;  // the device's state, not the EDS's: the timeline says it
   std::optional<std::uint16_t> accepted;
   if (connections::takes_accepted_size(ext{e}) && c.additional.size() > 1) accepted = c.additional[1];
