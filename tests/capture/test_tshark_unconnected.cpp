@@ -68,8 +68,8 @@ TEST(CaptureTsharkUnconnected, WrappedRequestsDecodeAsTsharkDecodesThem) {
     const auto us = cip::decode_unconnected_send(cip.subspan(6), 46).value();
     const auto inner = cip::decode_request(us.message, 0).value();
     const auto where = cip::address_of(cip::decode_path(inner.path, 2).value()).value();
-    ours << fmt::format("{}\t0x{:02x}\t0x{:02x}\t0x{:02x}\t{}\t{}\n", m.frame, cip::code(inner.service),
-                        where.class_id, where.instance, where.attribute.value_or(0), us.route.size() / 2);
+    ours << fmt::format("{}\t0x{:02x}\t0x{:02x}\t0x{:02x}\t{}\t{}\n", m.frame, cip::code(inner.service), where.class_id,
+                        where.instance, where.attribute.value_or(0), us.route.size() / 2);
   }
   ASSERT_EQ(t.writes().size(), 1U);  // the routed one is not the device's
   EXPECT_EQ(t.writes()[0].frame, 3U);
