@@ -30,6 +30,26 @@ connection_seen* by_triad(std::vector<connection_seen>& cs, const cip::forward_c
   return nullptr;
 }
 
+// What the judge reads of an explicit request: an Identity Get_Attributes_All
+// or a write, with the object it addresses.
+enum class judged : std::uint8_t { none, identity, write };
+struct judged_target {
+  judged what = judged::none;
+  cip::object_address where;
+};
+judged_target judged_request(const cip::request& q, std::size_t base) {
+  const auto s = cip::code(q.service);
+  auto path = cip::decode_path(q.path, base + 2);
+  const auto where = path ? cip::address_of(*path) : std::nullopt;
+  if (!where) return {};
+  if (is(s, cip::service::get_attributes_all) && where->class_id == cip::code(cip::class_id::identity) &&
+      where->instance == 1)
+    return {judged::identity, *where};
+  if (is(s, cip::service::set_attribute_single) || is(s, cip::service::set_attributes_all))
+    return {judged::write, *where};
+  return {};
+}
+
 }  // namespace
 
 std::uint64_t connection_seen::timeout_us(bool originator_to_target) const {
@@ -119,22 +139,48 @@ void tracker::request(const message& m, const cip::encap_header& h, cip::byte_vi
     }
     return;
   }
-  auto path = cip::decode_path(q->path, base + 2);
+  if (is(s, cip::service::unconnected_send)) return unconnected(m, key, *q, base);
+  explicit_request(m, key, *q, base);
+}
+
+// Service 0x52 is Unconnected_Send only at the Connection Manager; to other
+// objects it is their own service (a Logix tag's Read Tag Fragmented).
+void tracker::unconnected(const message& m, const request_key& key, const cip::request& q, std::size_t base) {
+  auto path = cip::decode_path(q.path, base + 2);
   const auto where = path ? cip::address_of(*path) : std::nullopt;
-  if (!where) return;
-  if (is(s, cip::service::get_attributes_all) && where->class_id == cip::code(cip::class_id::identity) &&
-      where->instance == 1) {
+  if (!where || where->class_id != cip::code(cip::class_id::connection_manager) || where->instance != 1) return;
+  const auto data_base = static_cast<std::size_t>(q.data.data() - m.payload.data());
+  auto us = cip::decode_unconnected_send(q.data, data_base);
+  if (!us) return problem(m, fmt::format("Unconnected_Send: {}", us.error().what));
+  const auto inner_base = static_cast<std::size_t>(us->message.data() - m.payload.data());
+  auto inner = cip::decode_request(us->message, inner_base);
+  if (!inner) return problem(m, fmt::format("request inside an Unconnected_Send: {}", inner.error().what));
+  // Only an empty route leaves the request with the device at the capture's
+  // address. Any port segment sends it on: to another node, or on the
+  // backplane to the module in a slot, which is generally not the adapter
+  // whose EDS its address matched. Such a request is counted, not judged.
+  if (!us->route.empty()) {
+    if (judged_request(*inner, inner_base).what != judged::none) ++routed_;
+    return;
+  }
+  explicit_request(m, key, *inner, inner_base);
+}
+
+void tracker::explicit_request(const message& m, const request_key& key, const cip::request& q, std::size_t base) {
+  const auto t = judged_request(q, base);
+  if (t.what == judged::identity) {
     pending_[key] = {pending::kind::identity, 0};
     return;
   }
-  const bool write = is(s, cip::service::set_attribute_single) || is(s, cip::service::set_attributes_all);
-  if (!write) return;
+  if (t.what != judged::write) return;
   if (writes_.size() >= limits_.max_writes) return void(++over_limits_);
-  writes_.push_back({m.source, m.destination, m.frame, s, where->class_id, where->instance, where->attribute,
-                     std::vector<std::uint8_t>(q->data.begin(), q->data.end()), std::nullopt});
+  writes_.push_back({m.source, m.destination, m.frame, cip::code(q.service), t.where.class_id, t.where.instance,
+                     t.where.attribute, std::vector<std::uint8_t>(q.data.begin(), q.data.end()), std::nullopt});
   pending_[key] = {pending::kind::write, writes_.size() - 1};
 }
 
+// Paired by key, whatever the reply's service: an Unconnected_Send's reply
+// is the embedded service's own, or 0xD2 with the error when routing failed.
 void tracker::reply(const message& m, const cip::encap_header& h, cip::byte_view cip) {
   const auto it = pending_.find(key_of(m.destination, m.source, h));
   if (it == pending_.end()) return;  // a reply to a request before the capture began, or to one not tracked

@@ -16,6 +16,7 @@
 #include "cip/connection_manager.hpp"
 #include "cip/encap.hpp"
 #include "cip/message.hpp"
+#include "cip/request.hpp"
 
 namespace edsc::capture {
 
@@ -114,6 +115,9 @@ class tracker {
   [[nodiscard]] const std::vector<undecodable>& problems() const { return problems_; }
   // What was seen but not kept because a limit was reached.
   [[nodiscard]] std::uint64_t over_limits() const { return over_limits_; }
+  // Identity reads and writes sent inside an Unconnected_Send with a route
+  // path: meant for another device than the capture's address, not judged.
+  [[nodiscard]] std::uint64_t routed() const { return routed_; }
   // Class 0/1 frames of no connection the capture showed opening (it started
   // after the Forward_Open), by connection id.
   [[nodiscard]] const std::map<std::uint32_t, std::uint64_t>& orphan_frames() const { return orphans_; }
@@ -139,6 +143,10 @@ class tracker {
     enum class kind : std::uint8_t { forward_open, write, identity } what = kind::forward_open;
     std::size_t index = 0;  // into connections_ or writes_
   };
+  // An Identity read or a write, bare or unwrapped from an Unconnected_Send;
+  // `base`: where the request starts in the message.
+  void explicit_request(const message& m, const request_key& key, const cip::request& q, std::size_t base);
+  void unconnected(const message& m, const request_key& key, const cip::request& q, std::size_t base);
 
   trace_limits limits_;
   std::vector<identity_seen> identities_;
@@ -150,6 +158,7 @@ class tracker {
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<std::size_t, bool>> by_id_;
   std::map<std::uint32_t, std::uint64_t> orphans_;
   std::uint64_t over_limits_ = 0;
+  std::uint64_t routed_ = 0;
 };
 
 }  // namespace edsc::capture

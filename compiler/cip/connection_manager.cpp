@@ -1,5 +1,9 @@
 #include "cip/connection_manager.hpp"
 
+#include <fmt/format.h>
+
+#include "base/plural.hpp"
+
 namespace edsc::cip {
 
 edsc::result<std::uint16_t, encode_error> encode_params16(const net_params& p, const char* field) {
@@ -132,6 +136,39 @@ forward_open_reply granted(const forward_open_request& fo, std::uint32_t ot_conn
   r.ot_api_us = fo.ot_rpi_us;
   r.to_api_us = fo.to_rpi_us;
   return r;
+}
+
+encoded encode_unconnected_send(const unconnected_send& us) {
+  const auto size = fit<std::uint16_t>(us.message.size(), 0xFFFF, "message request size");
+  if (!size) return fail(size.error());
+  const auto words = word_count(us.route, "route path size");
+  if (!words) return fail(words.error());
+  bytes d;
+  put_u8(d, us.priority_tick);
+  put_u8(d, us.timeout_ticks);
+  put_u16(d, *size);
+  put_padded(d, us.message);
+  put_u8(d, *words);
+  put_u8(d, 0);  // reserved
+  put_padded(d, us.route);
+  return encode_request(service::unconnected_send, logical_path(class_id::connection_manager, 1), d);
+}
+
+decoded<unconnected_send> decode_unconnected_send(byte_view data, std::size_t base) {
+  reader r(data, base);
+  unconnected_send us;
+  us.priority_tick = r.u8("priority/tick time");
+  us.timeout_ticks = r.u8("timeout ticks");
+  const auto size = r.u16("message request size");
+  if (r.ok() && size == 0) return decode_error{base + 2, "message request size 0: no request to send"};
+  us.message = r.take(size, "message request");
+  if (size % 2) r.u8("message request pad byte");
+  const auto words = r.u8("route path size");
+  r.u8("reserved byte");  // 0 when sent; what it holds changes nothing read here
+  us.route = r.take(words * 2u, "route path");
+  if (!r.ok()) return r.error();
+  if (r.remaining() > 0) return r.fail(fmt::format("{} after the route path", plural(r.remaining(), "byte")));
+  return us;
 }
 
 }  // namespace edsc::cip

@@ -1,7 +1,7 @@
 #pragma once
 // Connection Manager services: Forward_Open, Large_Forward_Open and
-// Forward_Close requests and replies, the electronic key segment and the
-// network connection parameters (ETHERNETIP_LIVE.md §4).
+// Forward_Close requests and replies, Unconnected_Send, the electronic key
+// segment and the network connection parameters (ETHERNETIP_LIVE.md §4).
 #include <cstdint>
 
 #include "cip/bytes.hpp"
@@ -82,5 +82,25 @@ struct forward_close_reply {
   std::uint32_t originator_serial = 0;
 };
 [[nodiscard]] decoded<forward_close_reply> decode_forward_close(byte_view data, std::size_t base);
+
+// Unconnected_Send (class 6 instance 1): an explicit request (`message`, a
+// whole request: service, path, data) for the device `route` leads to, the
+// route a padded EPATH of port segments; empty, the device itself. Views
+// into the bytes decoded or to encode. A routed request's success comes back
+// as the embedded service's own reply (its service | 0x80); a failure to
+// route it as an Unconnected_Send reply (0xD2) with a non-zero general
+// status, followed for routing errors by a Remaining Path Size byte (read
+// as the reply's data).
+struct unconnected_send {
+  std::uint8_t priority_tick = 0x0A;  // normal priority, 2^10 ms ticks
+  std::uint8_t timeout_ticks = 0x0E;  // 14 ticks: about 14 s for the routed request
+  byte_view message;
+  byte_view route;
+};
+// Refused when the message is over 65535 bytes or the route over 255 words.
+[[nodiscard]] encoded encode_unconnected_send(const unconnected_send& us);
+// The request's data (after its path); an error when a size runs past the
+// end or bytes follow the route path.
+[[nodiscard]] decoded<unconnected_send> decode_unconnected_send(byte_view data, std::size_t base);
 
 }  // namespace edsc::cip

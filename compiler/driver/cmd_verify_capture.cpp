@@ -167,8 +167,10 @@ json capture_json(const std::string& path, const read_capture& c, const verify::
   for (std::size_t i = 0; i < capture::drop_count; ++i)
     if (const auto n = c.drops[static_cast<capture::drop>(i)]; n > 0)
       drops[std::string(capture::drop_name(static_cast<capture::drop>(i)))] = n;
-  return {{"file", path},   {"frames", c.frames}, {"messages", c.messages},
-          {"drops", drops}, {"devices", devices}, {"connections", conns}};
+  json out = {{"file", path},   {"frames", c.frames}, {"messages", c.messages},
+              {"drops", drops}, {"devices", devices}, {"connections", conns}};
+  if (const auto routed = c.trace.routed(); routed > 0) out["routed_requests"] = routed;
+  return out;
 }
 
 std::string dump(const json& j) { return j.dump(2, ' ', false, json::error_handler_t::replace) + "\n"; }
@@ -182,6 +184,8 @@ void print(std::vector<file_report>& reports, const report_totals& totals, const
                         c.messages == 1 ? "" : "s");
     if (const auto bad = drops_text(c.drops); !bad.empty()) tail += fmt::format("; malformed: {}", bad);
     if (const auto over = c.trace.over_limits(); over > 0) tail += fmt::format("; {} past the tracker's limits", over);
+    if (const auto routed = c.trace.routed(); routed > 0)
+      tail += fmt::format("; {} routed past the device, not judged", plural(routed, "request"));
     if (!c.trace.problems().empty())
       tail += fmt::format("; {} undecodable (first: frame {}: {})", plural(c.trace.problems().size(), "message"),
                           c.trace.problems()[0].frame, c.trace.problems()[0].what);

@@ -275,6 +275,36 @@ TEST(capture_judge, a_write_at_a_parameter_s_link_path_is_judged_against_its_lim
   EXPECT_TRUE(write_to_link(5, 20, routed).verdict.findings.empty());
 }
 
+// The same write inside an Unconnected_Send with an empty route is the
+// device's own: judged as the bare one is, to the word. Routed to backplane
+// slot 0 it is another module's, and not judged against this EDS.
+TEST(capture_judge, a_write_inside_an_unconnected_send_is_judged_like_a_bare_one) {
+  const cip::bytes value{250, 0};  // Param2 allows 0 to 100
+  const auto write =
+      cip::encode_request(cip::service::set_attribute_single, cip::logical_path(0x0F, 2, 1), value).value();
+  const auto ok = rr(cip::encode_reply(cip::service::set_attribute_single, cip::general_status::success));
+  tracker bare;
+  clean_session(bare);
+  bare.add(at(20, ms(200), scanner, device, rr(write)));
+  bare.add(at(21, ms(201), device, scanner, ok));
+  tracker wrapped_write;
+  clean_session(wrapped_write);
+  wrapped_write.add(at(20, ms(200), scanner, device, rr(wrapped(write))));
+  wrapped_write.add(at(21, ms(201), device, scanner, ok));
+  const auto b = judge(bare);
+  const auto w = judge(wrapped_write);
+  ASSERT_EQ(w.verdict.findings.size(), 1U);
+  EXPECT_EQ(w.where(), std::vector<std::string>{"20:44 capture-write-limits"});
+  EXPECT_EQ(w.message(), b.message());
+
+  tracker routed;
+  clean_session(routed);
+  routed.add(at(20, ms(200), scanner, device, rr(wrapped(write, {0x01, 0x00}))));
+  routed.add(at(21, ms(201), device, scanner, ok));
+  EXPECT_TRUE(judge(routed).verdict.findings.empty());
+  EXPECT_EQ(routed.routed(), 1U);
+}
+
 TEST(capture_judge, a_device_that_says_it_is_another_product_is_an_error_and_not_judged_further) {
   cip::identity id;
   id.vendor = 1;

@@ -185,6 +185,117 @@ TEST(capture_trace, a_write_and_its_reply) {
   EXPECT_EQ(w.reply_general, 0);
 }
 
+// Set_Attribute_Single of Parameter 3's value to 300.
+cip::bytes set_param3() {
+  return cip::encode_request(cip::service::set_attribute_single, cip::logical_path(0x0F, 3, 1), cip::bytes{0x2C, 0x01})
+      .value();
+}
+
+TEST(capture_trace, a_write_inside_an_unconnected_send_and_its_reply) {
+  tracker t;
+  t.add(at(1, 0, scanner, device, rr(wrapped(set_param3()))));
+  // A routed request's success is the embedded service's own reply (0x90).
+  t.add(at(2, ms(1), device, scanner,
+           rr(cip::encode_reply(cip::service::set_attribute_single, cip::general_status::success))));
+  ASSERT_EQ(t.writes().size(), 1U);
+  const auto& w = t.writes()[0];
+  EXPECT_EQ(w.frame, 1U);
+  EXPECT_EQ(w.service, 0x10);
+  EXPECT_EQ(w.class_id, 0x0FU);
+  EXPECT_EQ(w.instance, 3U);
+  EXPECT_EQ(w.attribute, 1U);
+  EXPECT_EQ(w.data, (cip::bytes{0x2C, 0x01}));
+  EXPECT_EQ(w.target.address, device.address);
+  EXPECT_EQ(w.reply_general, 0);
+  EXPECT_EQ(t.routed(), 0U);
+  EXPECT_TRUE(t.problems().empty()) << t.problems()[0].what;
+}
+
+TEST(capture_trace, an_identity_read_inside_an_unconnected_send_gives_the_identity) {
+  cip::identity id;
+  id.vendor = 1;
+  id.device_type = 12;
+  id.product_code = 65001;
+  id.major = 2;
+  id.minor = 3;
+  id.product_name = "wrapped";
+  tracker t;
+  t.add(at(1, 0, scanner, device,
+           rr(wrapped(cip::encode_request(cip::service::get_attributes_all, cip::logical_path(0x01, 1)).value()))));
+  cip::bytes attrs;
+  cip::put_identity_fields(attrs, id);
+  t.add(at(2, ms(1), device, scanner,
+           rr(cip::encode_reply(cip::service::get_attributes_all, cip::general_status::success, attrs))));
+  ASSERT_EQ(t.identities().size(), 1U);
+  EXPECT_EQ(t.identities()[0].address, device.address);
+  EXPECT_EQ(t.identities()[0].frame, 2U);
+  EXPECT_EQ(t.identities()[0].id.product_code, 65001);
+  EXPECT_EQ(t.identities()[0].id.product_name, "wrapped");
+}
+
+// A route sends the request past the device at the capture's address: to
+// the module in backplane slot 0, to node 10 on port 2, over two hops. None
+// is that device's, so none is attributed to it; the judged ones are counted.
+TEST(capture_trace, a_routed_request_is_counted_not_attributed) {
+  tracker t;
+  const cip::bytes routes[] = {{0x01, 0x00}, {0x02, 0x0A}, {0x01, 0x01, 0x02, 0x0A}};
+  std::uint64_t n = 1;
+  for (const auto& route : routes) {
+    t.add(at(n++, 0, scanner, device, rr(wrapped(set_param3(), route))));
+    t.add(at(n++, ms(1), device, scanner,
+             rr(cip::encode_reply(cip::service::set_attribute_single, cip::general_status::success))));
+  }
+  t.add(at(n++, 0, scanner, device,
+           rr(wrapped(cip::encode_request(cip::service::get_attributes_all, cip::logical_path(0x01, 1)).value(),
+                      {0x01, 0x00}))));
+  // A Get_Attribute_Single routed on is nothing the judge reads: not counted.
+  t.add(at(n++, 0, scanner, device,
+           rr(wrapped(cip::encode_request(cip::service::get_attribute_single, cip::logical_path(0x0F, 3, 1)).value(),
+                      {0x01, 0x00}))));
+  EXPECT_TRUE(t.writes().empty());
+  EXPECT_TRUE(t.identities().empty());
+  EXPECT_EQ(t.routed(), 4U);
+  EXPECT_TRUE(t.problems().empty()) << t.problems()[0].what;
+}
+
+TEST(capture_trace, an_unconnected_send_error_reply_completes_the_write) {
+  tracker t;
+  t.add(at(1, 0, scanner, device, rr(wrapped(set_param3()))));
+  // 0xD2: routing failed, 0x01 with 0x0204 (timed out), remaining path size 0.
+  const std::uint16_t extended[] = {0x0204};
+  t.add(at(2, ms(1), device, scanner,
+           rr(cip::encode_reply_with_status(cip::service::unconnected_send, cip::general_status::connection_failure,
+                                            extended, cip::bytes{0x00})
+                  .value())));
+  ASSERT_EQ(t.writes().size(), 1U);
+  EXPECT_EQ(t.writes()[0].reply_general, 0x01);
+  EXPECT_TRUE(t.problems().empty()) << t.problems()[0].what;
+}
+
+// 0x52 is Unconnected_Send only at the Connection Manager: to a tag (class
+// 0x6B here) it is that object's service, not unwrapped.
+TEST(capture_trace, service_0x52_elsewhere_is_not_unwrapped) {
+  tracker t;
+  auto data = wrapped(set_param3());
+  const cip::bytes body(data.begin() + 6, data.end());  // the Unconnected_Send's data
+  t.add(at(1, 0, scanner, device, rr(cip::encode_request(0x52, cip::logical_path(0x6B, 1), body).value())));
+  EXPECT_TRUE(t.writes().empty());
+  EXPECT_TRUE(t.problems().empty()) << t.problems()[0].what;
+}
+
+TEST(capture_trace, an_unconnected_send_that_lies_is_a_problem) {
+  tracker t;
+  // 10 bytes of message request announced, 2 sent.
+  t.add(at(7, 0, scanner, device,
+           rr(cip::encode_request(cip::service::unconnected_send, cip::logical_path(0x06, 1),
+                                  cip::bytes{0x0A, 0x0E, 0x0A, 0x00, 0x10, 0x03})
+                  .value())));
+  ASSERT_EQ(t.problems().size(), 1U);
+  EXPECT_EQ(t.problems()[0].frame, 7U);
+  EXPECT_EQ(t.problems()[0].what, "Unconnected_Send: message request cut short: 10 bytes needed, 2 left");
+  EXPECT_TRUE(t.writes().empty());
+}
+
 TEST(capture_trace, messages_that_lie_are_problems_with_their_frame_never_a_crash) {
   tracker t;
   t.add(at(1, 0, scanner, device, {0x6F, 0x00, 0x10}));  // a header cut short

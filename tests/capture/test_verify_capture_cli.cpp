@@ -71,5 +71,21 @@ TEST(VerifyCaptureCli, JsonAndSarifCarryTheTimeline) {
   EXPECT_EQ(sarif["runs"][0]["results"][0]["ruleId"], "capture-forward-open");
 }
 
+// The fuzz seed with a write inside an Unconnected_Send for the device and
+// one routed to backplane slot 2: the routed one is counted in both reports.
+TEST(VerifyCaptureCli, RoutedRequestsAreCountedInTextAndJson) {
+  const std::string seed = std::string(EDSC_PROJECT_DIR) + "/tests/fuzz/seeds/capture/unconnected-send.pcap";
+  const auto text = run_edsc("verify --capture " + quoted(seed) + " " + quoted(eds) + " --color never");
+  EXPECT_EQ(text.status, 0) << text.output;
+  EXPECT_NE(text.output.find("6 frames, 4 EtherNet/IP messages; 1 request routed past the device, not judged"),
+            std::string::npos)
+      << text.output;
+  const auto j = run(live_test::quoted(EDSC_BINARY) + " verify --capture " + quoted(seed) + " " + quoted(eds) +
+                     " --format json 2>/dev/null");
+  const auto doc = nlohmann::json::parse(j, nullptr, false);
+  ASSERT_FALSE(doc.is_discarded()) << j;
+  EXPECT_EQ(doc["capture"]["routed_requests"], 1) << j;
+}
+
 }  // namespace
 }  // namespace edsc::capture::test

@@ -38,6 +38,11 @@ inline cip::bytes rr(const cip::bytes& cip, const cip::sender_context& ctx = con
   return cip::encode_encap(cip::command::send_rr_data, session, ctx, cip::send_rr_data(cip, 0).value()).value();
 }
 
+// `request` inside an Unconnected_Send along `route` (empty: for the device itself).
+inline cip::bytes wrapped(const cip::bytes& request, const cip::bytes& route = {}) {
+  return cip::encode_unconnected_send({0x0A, 0x0E, request, route}).value();
+}
+
 // A Forward_Open of 10 ms O->T (38 bytes: 32 of data, sequence count, run/idle
 // header) and 20 ms T->O (34 bytes), multiplier x16 (code 2).
 inline cip::forward_open_request open_request() {

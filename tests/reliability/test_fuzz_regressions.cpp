@@ -49,7 +49,7 @@ TEST(FuzzRegressions, Diff) { EXPECT_EQ(replay("diff", diff_body), 1u); }
 TEST(FuzzRegressions, DiffSeedPairs) { EXPECT_EQ(replay("diff", diff_body, "seeds"), 2u); }
 TEST(FuzzRegressions, SimSeeds) { EXPECT_EQ(replay("sim", sim_body, "seeds"), 2u); }
 TEST(FuzzRegressions, SessionSeeds) { EXPECT_EQ(replay("session", session_body, "seeds"), 2u); }
-TEST(FuzzRegressions, CaptureSeeds) { EXPECT_EQ(replay("capture", capture_body, "seeds"), 2u); }
+TEST(FuzzRegressions, CaptureSeeds) { EXPECT_EQ(replay("capture", capture_body, "seeds"), 3u); }
 
 // Every folder is a target's and holds inputs: a new finding's folder is
 // replayed here without a new test, and no empty placeholder passes as one.
