@@ -1,6 +1,6 @@
 // `edsc net check NETWORK.toml` and `edsc net map NETWORK.toml`: a DeviceNet
-// network file checked with its nodes' EDS files, and the scanner's images
-// laid out (docs/network.md).
+// or EtherNet/IP network file checked with its devices' EDS files, and a
+// DeviceNet scanner's images laid out (docs/network.md).
 #include <filesystem>
 #include <memory>
 
@@ -57,6 +57,13 @@ int run_net_map(const net_cli& cli) {
     return io::read_source(path);
   });
   if (refuse_input_as_output(cli.output, inputs) != exit_ok) return exit_failure;
+  if (checked.enip) {
+    print_error(
+        fmt::format("no map written: {} is an EtherNet/IP network; net map lays out DeviceNet scanners' "
+                    "images (net check judges EtherNet/IP networks)",
+                    cli.input));
+    return exit_failure;
+  }
   if (checked.has_errors() || !checked.result) {
     // The findings go to stderr so a redirected map is never half a picture.
     const auto totals = checked.totals;
@@ -88,15 +95,15 @@ int run_net_map(const net_cli& cli) {
 }  // namespace
 
 void register_net(CLI::App& app, command_action& run) {
-  auto* net =
-      app.add_subcommand("net", "Check a DeviceNet network file and lay out its scanner's images (docs/network.md)");
+  auto* net = app.add_subcommand(
+      "net", "Check a DeviceNet or EtherNet/IP network file, lay out a DeviceNet scanner's images (docs/network.md)");
   net->require_subcommand(1);
 
   auto check_cli = std::make_shared<net_cli>();
   auto* check = net->add_subcommand("check", "Check a network file and its nodes' EDS files");
   takes(check->add_option("network", check_cli->input, "The network file (TOML)"), arg_kind::toml)->required();
   add_report_options(check, check_cli->color, check_cli->format, check_cli->warning_flags);
-  add_example(check, "edsc net check plant.toml", "judge a DeviceNet network");
+  add_example(check, "edsc net check plant.toml", "judge a DeviceNet or EtherNet/IP network");
   check->callback([&run, check_cli] { run = [check_cli] { return run_net_check(*check_cli); }; });
 
   auto map_cli = std::make_shared<net_cli>();

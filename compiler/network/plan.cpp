@@ -10,6 +10,7 @@
 #include "base/plural.hpp"
 #include "facts/header_view.hpp"
 #include "io/read_file.hpp"
+#include "network/enip_check.hpp"
 #include "network/layout.hpp"
 #include "network/read_network.hpp"
 
@@ -60,6 +61,10 @@ class checker {
   void run() {
     auto read = read_network(*out_.source);
     out_.diags = std::move(read.diags);
+    if (read.enip) {
+      out_.enip = std::move(read.enip);
+      return check_enip(*out_.enip, out_, options_, read_);
+    }
     if (!read.net) return;
     out_.file = std::move(read.net);
     const auto& net = *out_.file;

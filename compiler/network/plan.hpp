@@ -12,6 +12,7 @@
 #include "check/check_file.hpp"
 #include "diag/report.hpp"
 #include "io/read_file.hpp"
+#include "network/enip.hpp"
 #include "network/network.hpp"
 #include "network/profile.hpp"
 
@@ -50,8 +51,9 @@ struct plan {
 };
 
 struct checked_network {
-  std::unique_ptr<source_file> source;  // the network file
-  std::optional<network_file> file;
+  std::unique_ptr<source_file> source;   // the network file
+  std::optional<network_file> file;      // a DeviceNet network
+  std::optional<enip_file> enip;         // an EtherNet/IP network (kind = "ethernetip")
   diagnostics diags;                     // into the network file, after the policy
   std::vector<file_report> eds_reports;  // each EDS with findings, located in it
   std::optional<plan> result;            // absent when the file could not be planned

@@ -5,13 +5,15 @@
 #include <optional>
 
 #include "diag/diagnostic.hpp"
+#include "network/enip.hpp"
 #include "network/network.hpp"
 #include "source/source_file.hpp"
 
 namespace edsc::network {
 
 struct read_result {
-  std::optional<network_file> net;  // absent when the file is not TOML or not a DeviceNet network
+  std::optional<network_file> net;  // a DeviceNet network; absent when the file is not TOML or another kind
+  std::optional<enip_file> enip;    // kind = "ethernetip"
   diagnostics diags;
 };
 

@@ -198,7 +198,8 @@ TEST_F(Cli, ManPagesPointAtTheRightPagesAndTheInstalledFiles) {
   ASSERT_EQ(run_edsc({"_man", man.string()}).status, 0);
   const auto top = read_bytes(man / "edsc.1");
   // net has a page of its own, listing check and map.
-  EXPECT_NE(top.find("\\fBnet\\fR\nCheck a DeviceNet network file and lay out its scanner's images (docs/network.md). "
+  EXPECT_NE(top.find("\\fBnet\\fR\nCheck a DeviceNet or EtherNet/IP network file, lay out a DeviceNet scanner's images "
+                     "(docs/network.md). "
                      "See \\fBedsc\\-net\\fR(1).\n"),
             std::string::npos)
       << top;

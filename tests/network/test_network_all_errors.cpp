@@ -77,8 +77,11 @@ TEST_F(Net, AFileWithoutItsKindStillHasItsNodesChecked) {
   EXPECT_EQ(count(got, "net-key-missing"), 1u);  // [network]
   EXPECT_EQ(count(got, "net-mac-range"), 1u);
   // Another kind is not read as DeviceNet: its nodes would follow other rules.
-  c = check("[network]\nkind = \"ethernetip\"\n" + nodes);
+  c = check("[network]\nkind = \"controlnet\"\n" + nodes);
   EXPECT_EQ(ids(c.diags), (std::vector<std::string>{"net-kind-unsupported"}));
+  // An EtherNet/IP file has adapters, not nodes: [[node]] is unknown there.
+  c = check("[network]\nkind = \"ethernetip\"\n[scanner]\naddress = \"192.168.1.10\"\n" + nodes);
+  EXPECT_EQ(ids(c.diags), (std::vector<std::string>{"net-key-unknown"}));
 }
 
 }  // namespace

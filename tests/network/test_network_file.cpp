@@ -41,8 +41,8 @@ TEST_F(Net, KeysOfTheWrongTypeMissingOrUnknown) {
   EXPECT_EQ(ids(missing.diags), (std::vector<std::string>{"net-key-missing", "net-key-missing"}));  // baud, [scanner]
 }
 
-TEST_F(Net, OtherKindsAreNotPlannedYet) {
-  auto c = check("[network]\nkind = \"ethernetip\"\n");
+TEST_F(Net, OtherKindsAreNotPlanned) {
+  auto c = check("[network]\nkind = \"controlnet\"\n");
   EXPECT_EQ(ids(c.diags), (std::vector<std::string>{"net-kind-unsupported"}));
   EXPECT_EQ(at(*c.source, c.diags[0]), "2:8");
 }
