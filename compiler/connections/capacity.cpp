@@ -14,7 +14,8 @@ bool same_word(std::string_view a, std::string_view b) {
 }
 
 // A field that is a non-negative integer: anything else is the checker's to
-// report and no limit here.
+// report and no limit here. The schema's UINT/UDINT already refuse a sign;
+// the test of `negative` keeps a schema change from making one a count.
 std::optional<std::uint64_t> count_of(const model::value* v) {
   if (v == nullptr || !v->is_integer() || v->negative) return std::nullopt;
   return v->as_uint();
