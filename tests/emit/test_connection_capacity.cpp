@@ -49,7 +49,8 @@ TEST(ConnectionCapacity, MalformedTSpecsAreLeftOut) {
       "    TSpec3 = Tx, abc, 10;\n"
       "    TSpec4 = Tx, 10;\n"
       "    TSpec5 = Rx, 10, 70000000000;\n"
-      "    TSpec6 = Tx, 12, 700;\n");
+      "    TSpec6 = Tx, 12, 700;\n"
+      "    TSpec7 = 1_Acme_Both, 10, 10;\n");  // a vendor's own keyword: no direction edsc knows
   const auto l = limits_of(c->dev);
   ASSERT_EQ(l.tspecs.size(), 1u);
   EXPECT_EQ(l.tspecs[0].number, 6u);
