@@ -9,6 +9,7 @@
 #include "connections/forward_open_fit.hpp"
 #include "connections/overrides.hpp"
 #include "connections/served_points.hpp"
+#include "network/enip_capacity.hpp"
 
 namespace edsc::network {
 
@@ -31,6 +32,7 @@ class enip_checker {
   void run(const enip_file& f) {
     addresses(f);
     for (const auto& a : f.adapters) adapter(a);
+    check_scanner_capacity(f.scan, totals_, out_.diags);
   }
 
  private:
@@ -81,8 +83,14 @@ class enip_checker {
                  fmt::format("adapter '{}': {} has {}; a scanner tool will not register it", a.name.value, path,
                              plural(e.a->errors(), "error")));
     std::vector<const connections::connection_point*> chosen;
-    for (const auto& c : a.connections) chosen.push_back(connection(a, e, c));
+    std::vector<planned_io> io;
+    for (const auto& c : a.connections) {
+      auto p = connection(a, e, c);
+      chosen.push_back(p ? p->point : nullptr);
+      if (p && p->fo) io.push_back({p->point, &c, *p->fo});
+    }
     listen_only_owners(a, chosen);
+    check_adapter_capacity(a, e.a->dev, io, out_.diags, totals_);
   }
 
   // The served point a planned connection names, or none after saying why.
@@ -108,15 +116,21 @@ class enip_checker {
     return nullptr;
   }
 
-  const connections::connection_point* connection(const enip_adapter& a, const adapter_eds& e,
-                                                  const enip_connection& c) {
+  // The point a planned connection names, and its Forward_Open with the
+  // plan's choices in it where edsc can build one.
+  struct chosen_point {
+    const connections::connection_point* point = nullptr;
+    std::optional<cip::forward_open_request> fo;
+  };
+
+  std::optional<chosen_point> connection(const enip_adapter& a, const adapter_eds& e, const enip_connection& c) {
     const auto* p = find_point(a, e, c);
-    if (p == nullptr) return nullptr;
+    if (p == nullptr) return std::nullopt;
     if (!p->plan.not_openable.empty() && !p->plan.needs_owner) {
       add(diag_id::net_connection_not_checked, c.where,
           fmt::format("adapter '{}': Connection{} \"{}\" is not checked: {}", a.name.value, p->number,
                       p->plan.facts.name, p->plan.not_openable));
-      return p;
+      return chosen_point{p, std::nullopt};
     }
     const model::device* dev = &e.a->dev;
     std::optional<connections::applied_sets> applied;
@@ -128,7 +142,7 @@ class enip_checker {
       if (!r) {
         for (const auto& why : r.error())
           add(diag_id::net_set_invalid, c.where, fmt::format("adapter '{}': {}", a.name.value, why.message));
-        return p;
+        return chosen_point{p, std::nullopt};
       }
       applied = std::move(*r);
       dev = &applied->dev;
@@ -142,7 +156,7 @@ class enip_checker {
     std::optional<cip::byte_view> config;
     if (!p->plan.config_data.empty()) config = cip::byte_view(p->plan.config_data);
     if (auto r = connections::check_fit(dev, *p, fo, config)) refused(a, c, *p, *r);
-    return p;
+    return chosen_point{p, fo};
   }
 
   void refused(const enip_adapter& a, const enip_connection& c, const connections::connection_point& p,
@@ -183,6 +197,7 @@ class enip_checker {
   const check_options& options_;
   const eds_reader& read_;
   std::map<std::string, adapter_eds> files_;
+  plan_totals totals_;
 };
 
 }  // namespace

@@ -15,6 +15,7 @@ const std::string opener_eds = std::string(EDSC_SHARED_DIR) + "/opener/data/open
 // Connection1: O->T 4 bytes to Assem150, T->O 8 from Assem100, T->O point
 // to point only (field 2 bits 20-22: 0x4 << 20), RPI Param1 (10-50 ms);
 // Param2 a configuration value from 0 to 100. Connection2: class 3 only.
+// One I/O connection at a time, 150 packets per second each way up to 8 bytes.
 const char* const p2p_eds = R"([File]
 DescText = "p2p";
 CreateDate = 01-01-2020;
@@ -46,6 +47,10 @@ Assem150 = "Out","20 04 24 96 30 03",4,0x0000,,,32,;
 [Connection Manager]
 Connection1 = 0x04010002,0x44440405,Param1,4,Assem150,Param1,8,Assem100,,,,,"io","","20 04 24 01 2C 96 2C 64";
 Connection2 = 0x04010008,0x44440405,Param1,4,Assem150,Param1,8,Assem100,,,,,"explicit","","20 04 24 01 2C 96 2C 64";
+
+[Capacity]
+MaxIOConnections = 1;
+TSpec1 = TxRx, 8, 150;
 )";
 
 class EnipNet : public Net {
@@ -172,6 +177,56 @@ TEST_F(EnipNet, AConnectionEdscCannotBuildIsANoteWithTheReason) {
   EXPECT_NE(message(c).find("adapter 'p': Connection2 is not checked: it is not a class 1 connection"),
             std::string::npos)
       << message(c);
+}
+
+// Two connections at 10 ms to an adapter that holds one: 2 > MaxIOConnections,
+// and 200 packets per second each way past the 150 its TSpec states.
+TEST_F(EnipNet, AnAdapterPastItsCapacityIsFoundPerLimit) {
+  const std::string two =
+      "[[adapter]]\nname = \"p\"\naddress = \"192.168.1.30\"\neds = \"p2p.eds\"\n"
+      "connections = [{ connection = 1, rpi_ms = 10 }, { connection = 1, rpi_ms = 10 }]\n";
+  const auto c = plan(two);
+  ASSERT_EQ(ids(c.diags),
+            (std::vector<std::string>{"net-capacity-connections", "net-capacity-pps", "net-capacity-pps"}));
+  EXPECT_EQ(at(*c.source, c.diags[0]), "12:15");  // the adapter's connections
+  EXPECT_NE(message(c).find("adapter 'p' is planned 2 I/O connections; its EDS allows 1 (MaxIOConnections = 1)"),
+            std::string::npos)
+      << message(c);
+  EXPECT_EQ(c.diags[1].level, edsc::severity::warning);
+  EXPECT_NE(message(c, 1).find("adapter 'p' would consume 200 packets per second (O->T); its EDS states 150 at 4 "
+                               "bytes (TSpec1)"),
+            std::string::npos)
+      << message(c, 1);
+  EXPECT_NE(message(c, 2).find("would produce 200 packets per second (T->O); its EDS states 150 at 8 bytes"),
+            std::string::npos)
+      << message(c, 2);
+  // One connection at 10 ms: 100 each way, inside both limits.
+  const auto one = plan(
+      "[[adapter]]\nname = \"p\"\naddress = \"192.168.1.30\"\neds = \"p2p.eds\"\n"
+      "connections = [{ connection = 1, rpi_ms = 10 }]\n");
+  EXPECT_TRUE(one.diags.empty()) << message(one);
+  // A shorter RPI never lowers the load: at 6 ms, 167 packets per second is past 150 again.
+  const auto faster = plan(
+      "[[adapter]]\nname = \"p\"\naddress = \"192.168.1.30\"\neds = \"p2p.eds\"\n"
+      "connections = [{ connection = 1, rpi_ms = 10, to_rpi_ms = 6 }]\n");
+  EXPECT_EQ(ids(faster.diags), (std::vector<std::string>{"net-capacity-pps", "net-rpi-range"}));
+}
+
+TEST_F(EnipNet, ThePlanPastTheScannersStatedLimitsIsAnError) {
+  const auto c = check(
+      "[network]\nkind = \"ethernetip\"\n\n[scanner]\naddress = \"192.168.1.10\"\n"
+      "max_connections = 1\nmax_pps = 100\n\n" +
+      opener("a", "192.168.1.20", "[1, 2]"));
+  ASSERT_EQ(ids(c.diags), (std::vector<std::string>{"net-scanner-capacity", "net-scanner-capacity"}));
+  EXPECT_EQ(at(*c.source, c.diags[0]), "6:19");
+  EXPECT_NE(message(c).find("the plan opens 2 I/O connections from the scanner; max_connections is 1"),
+            std::string::npos)
+      << message(c);
+  // Connection1 and 2 at OpENer's 30 ms default: about 33 packets per second each way, each.
+  EXPECT_NE(message(c, 1).find("the plan's connections carry 133 packets per second to and from the scanner; "
+                               "max_pps is 100"),
+            std::string::npos)
+      << message(c, 1);
 }
 
 TEST_F(EnipNet, NetMapSaysItDrawsDeviceNetOnly) {
