@@ -26,10 +26,9 @@ std::string pps_text(double pps) { return fmt::format("{:.0f}", pps); }
 void check_count(const enip_adapter& a, std::uint64_t planned, const std::optional<connections::stated_count>& limit,
                  const char* keyword, diagnostics& out) {
   if (!limit || planned <= limit->value) return;
-  out.push_back(make_diagnostic(
-      diag_id::net_capacity_connections, a.connections_where,
-      fmt::format("adapter '{}' is planned {} I/O {}; its EDS allows {} ({} = {})", a.name.value, planned,
-                  planned == 1 ? "connection" : "connections", limit->value, keyword, limit->value)));
+  out.push_back(make_diagnostic(diag_id::net_capacity_connections, a.connections_where,
+                                fmt::format("adapter '{}' is planned {}; its EDS allows {} ({} = {})", a.name.value,
+                                            plural(planned, "I/O connection"), limit->value, keyword, limit->value)));
 }
 
 // A TSpec's size and rate are read as the data size and that direction's
@@ -77,10 +76,9 @@ void check_adapter_capacity(const enip_adapter& a, const model::device& dev, std
 
 void check_scanner_capacity(const enip_scanner& s, const plan_totals& totals, diagnostics& out) {
   if (s.max_connections.given && totals.connections > s.max_connections.value)
-    out.push_back(make_diagnostic(
-        diag_id::net_scanner_capacity, s.max_connections.where,
-        fmt::format("the plan opens {} I/O {} from the scanner; max_connections is {}", totals.connections,
-                    totals.connections == 1 ? "connection" : "connections", s.max_connections.value)));
+    out.push_back(make_diagnostic(diag_id::net_scanner_capacity, s.max_connections.where,
+                                  fmt::format("the plan opens {} from the scanner; max_connections is {}",
+                                              plural(totals.connections, "I/O connection"), s.max_connections.value)));
   if (s.max_pps.given && totals.pps > s.max_pps.value)
     out.push_back(make_diagnostic(
         diag_id::net_scanner_capacity, s.max_pps.where,

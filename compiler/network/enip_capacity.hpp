@@ -17,7 +17,6 @@ namespace edsc::network {
 // with the plan's RPIs and multicast choice.
 struct planned_io {
   const connections::connection_point* point = nullptr;
-  const enip_connection* planned = nullptr;
   cip::forward_open_request fo;
 };
 

@@ -87,7 +87,7 @@ class enip_checker {
     for (const auto& c : a.connections) {
       auto p = connection(a, e, c);
       chosen.push_back(p ? p->point : nullptr);
-      if (p && p->fo) io.push_back({p->point, &c, *p->fo});
+      if (p && p->fo) io.push_back({p->point, *p->fo});
     }
     listen_only_owners(a, chosen);
     check_adapter_capacity(a, e.a->dev, io, out_.diags, totals_);
